@@ -1,0 +1,82 @@
+"""Lubricant properties and the Barus viscosity law (MODEL.md §5, paper P11)."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+
+def _check_positive(name: str, value: float, allow_zero: bool = False) -> None:
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+        raise ValueError(f"{name} must be a finite number, got {value!r}")
+    if value < 0 or (value == 0 and not allow_zero):
+        raise ValueError(f"{name} must be {'non-negative' if allow_zero else 'positive'}, got {value!r}")
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    """Newtonian lubricant with Barus pressure/temperature viscosity (MODEL.md §5).
+
+    Parameters
+    ----------
+    viscosity : float
+        Dynamic viscosity eta_0 at ``reference_temperature`` and ambient pressure, Pa s.
+    reference_temperature : float
+        T_R, degrees Celsius.
+    pressure_viscosity : float
+        Barus pressure-viscosity coefficient c_etaP, 1/Pa.
+    temperature_viscosity : float
+        Temperature-viscosity coefficient c_etaT, 1/K (= 1/degC).
+    thermal_conductivity : float
+        K_c, W/(m K); sets the Crook thermal softening (MODEL.md §6).
+    density : float
+        kg/m^3; used by the ball drag law (MODEL.md §8).
+    """
+
+    viscosity: float
+    reference_temperature: float
+    pressure_viscosity: float
+    temperature_viscosity: float
+    thermal_conductivity: float
+    density: float
+
+    def __post_init__(self) -> None:
+        _check_positive("viscosity", self.viscosity)
+        if not isinstance(self.reference_temperature, (int, float)) or not math.isfinite(self.reference_temperature):
+            raise ValueError(f"reference_temperature must be finite, got {self.reference_temperature!r}")
+        _check_positive("pressure_viscosity", self.pressure_viscosity, allow_zero=True)
+        _check_positive("temperature_viscosity", self.temperature_viscosity)
+        _check_positive("thermal_conductivity", self.thermal_conductivity)
+        _check_positive("density", self.density, allow_zero=True)
+
+    def viscosity_at(self, pressure, temperature=None):
+        """Barus viscosity eta = eta_0 exp(c_etaP p - c_etaT (T - T_R)), Pa s (P11).
+
+        Parameters
+        ----------
+        pressure : array_like
+            Pa.
+        temperature : array_like, optional
+            Degrees Celsius; ``reference_temperature`` if omitted.
+        """
+        exponent = self.pressure_viscosity * np.asarray(pressure, dtype=float)
+        if temperature is not None:
+            exponent = exponent - self.temperature_viscosity * (np.asarray(temperature, dtype=float) - self.reference_temperature)
+        return self.viscosity * np.exp(exponent)
+
+
+#: Reference oil of Jain & Hunt (2011), table 1b, with the two values the OCR lost
+#: (MODEL.md §8).
+REFERENCE_LUBRICANT = Lubricant(
+    viscosity=0.04,  # Pa s at 30 degC (paper table 1b)
+    reference_temperature=30.0,  # degC (paper table 1b)
+    # Lost by the OCR. 1.75e-8 1/Pa is an ordinary mineral-oil value and, with the ball
+    # drag of MODEL.md §8 and fixed 40 deg angles, reproduces the paper's 1 % cage-slip
+    # threshold at about 1.3 kN (1.5e-8 gives 1.9 kN, 2.0e-8 gives 0.95 kN).
+    pressure_viscosity=1.75e-8,
+    temperature_viscosity=0.05,  # 1/degC (paper table 1b)
+    # Lost by the OCR; 0.14 W/(m K) is typical of mineral oil and matters little.
+    thermal_conductivity=0.14,
+    density=860.0,  # kg/m^3 (paper table 1b)
+)

@@ -1,0 +1,178 @@
+"""Bearing files (TOML, SI units, angles in degrees) that round-trip every field.
+
+Example::
+
+    [bearing]
+    balls = 16
+    ball_diameter = 25e-3
+    pitch_diameter = 155e-3
+    inner_conformity = 0.52          # or inner_groove_radius = 13e-3 (m)
+    outer_conformity = 0.52          # or outer_groove_radius = 13e-3 (m)
+    contact_angle = 40.0             # free angle, degrees; or diametral_clearance (m)
+    ball_mass = 0.064                # optional; else from the ball material density
+    [material]                       # ball and races; [ball_material]/[race_material] override
+    youngs_modulus = 210e9
+    poisson_ratio = 0.3
+    density = 7850
+    [lubricant]                      # optional; reference oil if absent
+    viscosity = 0.04
+    reference_temperature = 30.0     # degC
+    pressure_viscosity = 1.75e-8
+    temperature_viscosity = 0.05
+    thermal_conductivity = 0.14
+    density = 860
+    [drag]                           # optional; fully flooded sphere drag if absent
+    drag_coefficient = 0.5
+    oil_volume_fraction = 1.0
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+from pathlib import Path
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+from contact.lubricant import Lubricant
+from .bearing import BallDrag, Bearing, Material
+from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
+
+__all__ = ["BearingFile", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
+
+
+@dataclass(frozen=True)
+class BearingFile:
+    """Everything a bearing file describes."""
+
+    bearing: Bearing
+    lubricant: Lubricant = REFERENCE_LUBRICANT
+    drag: BallDrag = REFERENCE_DRAG
+
+
+_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag"}
+_BEARING_KEYS = {"balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
+                 "inner_groove_radius", "outer_groove_radius", "contact_angle", "diametral_clearance",
+                 "ball_mass"}
+
+
+def _table(data: dict, name: str, allowed: set[str]) -> dict:
+    table = data.get(name, {})
+    if not isinstance(table, dict):
+        raise ValueError(f"[{name}] must be a table")
+    unknown = set(table) - allowed
+    if unknown:
+        raise ValueError(f"unknown key(s) in [{name}]: {', '.join(sorted(unknown))} "
+                         f"(allowed: {', '.join(sorted(allowed))})")
+    for key, value in table.items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ValueError(f"{name}.{key} must be a number, got {value!r}")
+    return dict(table)
+
+
+def _one_of(table: dict, a: str, b: str) -> str:
+    present = [k for k in (a, b) if k in table]
+    if len(present) != 1:
+        raise ValueError(f"[bearing] needs exactly one of {a} or {b}, got {present or 'neither'}")
+    return present[0]
+
+
+def _dataclass_from(cls, data: dict, name: str):
+    allowed = {f.name for f in fields(cls)}
+    return cls(**_table(data, name, allowed)) if name in data else None
+
+
+def loads_bearing(text: str) -> BearingFile:
+    """Parse a bearing file from a TOML string; unknown sections or keys raise ValueError."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as err:
+        raise ValueError(f"bearing file is not valid TOML: {err}") from None
+    unknown = set(data) - _SECTIONS
+    if unknown:
+        raise ValueError(f"unknown section(s) {', '.join(sorted(unknown))} (allowed: {', '.join(sorted(_SECTIONS))})")
+    if "bearing" not in data:
+        raise ValueError("bearing file needs a [bearing] section")
+    b = _table(data, "bearing", _BEARING_KEYS)
+    material = _dataclass_from(Material, data, "material") or Material()
+    kwargs = dict(
+        balls=b.get("balls"),
+        ball_diameter=b.get("ball_diameter"),
+        pitch_diameter=b.get("pitch_diameter"),
+        ball_material=_dataclass_from(Material, data, "ball_material") or material,
+        race_material=_dataclass_from(Material, data, "race_material") or material,
+        ball_mass=b.get("ball_mass"),
+    )
+    for name in ("balls", "ball_diameter", "pitch_diameter"):
+        if kwargs[name] is None:
+            raise ValueError(f"[bearing] needs {name}")
+    if isinstance(kwargs["balls"], float):
+        raise ValueError(f"balls must be an integer, got {kwargs['balls']!r}")
+    for race in ("inner", "outer"):
+        key = _one_of(b, f"{race}_conformity", f"{race}_groove_radius")
+        value = b[key]
+        if key.endswith("groove_radius"):
+            if not kwargs["ball_diameter"] > 0:
+                raise ValueError(f"ball_diameter must be positive, got {kwargs['ball_diameter']!r}")
+            value = value / kwargs["ball_diameter"]
+        kwargs[f"{race}_conformity"] = value
+    if _one_of(b, "contact_angle", "diametral_clearance") == "contact_angle":
+        bearing = Bearing(contact_angle=math.radians(b["contact_angle"]), **kwargs)
+    else:
+        bearing = Bearing.from_clearance(diametral_clearance=b["diametral_clearance"], **kwargs)
+    lubricant = _dataclass_from(Lubricant, data, "lubricant") or REFERENCE_LUBRICANT
+    drag = _dataclass_from(BallDrag, data, "drag") or REFERENCE_DRAG
+    return BearingFile(bearing, lubricant, drag)
+
+
+def load_bearing(path) -> BearingFile:
+    """Read a bearing file (see the module docstring for the format)."""
+    return loads_bearing(Path(path).read_text(encoding="utf-8"))
+
+
+def _section(name: str, obj) -> str:
+    lines = [f"[{name}]"]
+    for f in fields(obj):
+        lines.append(f"{f.name} = {getattr(obj, f.name)!r}")
+    return "\n".join(lines)
+
+
+def _degrees_exact(angle: float) -> float:
+    """Degrees value whose math.radians() gives back ``angle`` bit for bit (the plain
+    conversion is off by one ulp for some angles)."""
+    deg = math.degrees(angle)
+    for candidate in (deg, *(math.nextafter(deg, d) for d in (math.inf, -math.inf))):
+        if math.radians(candidate) == angle:
+            return candidate
+    return deg
+
+
+def dumps_bearing(setup: BearingFile | Bearing) -> str:
+    """TOML text for a bearing (and lubricant, drag).
+
+    :func:`loads_bearing` inverts it exactly, except that a free contact angle that no
+    float number of degrees maps onto (about 1 in 10 arbitrary radian values) comes back
+    within one ulp; a bearing read from a file always round-trips bit for bit.
+    """
+    if isinstance(setup, Bearing):
+        setup = BearingFile(setup)
+    b = setup.bearing
+    parts = ["[bearing]", f"balls = {b.balls}", f"ball_diameter = {b.ball_diameter!r}",
+             f"pitch_diameter = {b.pitch_diameter!r}", f"inner_conformity = {b.inner_conformity!r}",
+             f"outer_conformity = {b.outer_conformity!r}",
+             f"contact_angle = {_degrees_exact(b.contact_angle)!r}  # free contact angle, degrees"]
+    parts.append(f"ball_mass = {b.ball_mass!r}")
+    text = "\n".join(parts) + "\n\n"
+    if b.ball_material == b.race_material:
+        text += _section("material", b.ball_material) + "\n\n"
+    else:
+        text += _section("ball_material", b.ball_material) + "\n\n" + _section("race_material", b.race_material) + "\n\n"
+    text += _section("lubricant", setup.lubricant) + "\n\n" + _section("drag", setup.drag) + "\n"
+    return text
+
+
+def save_bearing(setup: BearingFile | Bearing, path) -> None:
+    """Write a bearing file."""
+    Path(path).write_text(dumps_bearing(setup), encoding="utf-8")

@@ -1,0 +1,78 @@
+"""Command line: ``python -m exudyn_bearing COMMAND ...`` (see ``--help``)."""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+from .bearingfile import BearingFile, load_bearing
+from .presets import REFERENCE_BEARING
+
+
+def _setup(path) -> BearingFile:
+    return load_bearing(path) if path else BearingFile(REFERENCE_BEARING)
+
+
+def _loads(args) -> int:
+    from .quasistatic import solve_load_distribution
+
+    setup = _setup(args.bearing)
+    result = solve_load_distribution(
+        setup.bearing, axial=args.axial, radial=args.radial, rpm=args.rpm,
+        moment=tuple(args.moment) if args.moment else None,
+        mode="fixed-angle" if args.fixed_angle else "geometric", hold_axial=args.hold_axial,
+        hertz_method="exact" if args.exact_hertz else "fit")
+    if args.json:
+        json.dump(result.to_dict(), sys.stdout, indent=1)
+        print()
+        return 0
+    b = setup.bearing
+    print(f"Quasi-static load distribution ({result.mode} contact angles, MODEL.md §4)")
+    print(f"bearing: Z={b.balls}, D={b.ball_diameter * 1e3:g} mm, d_m={b.pitch_diameter * 1e3:g} mm, "
+          f"free angle {math.degrees(b.contact_angle):.2f} deg, f_i={b.inner_conformity:g}, f_o={b.outer_conformity:g}")
+    print(f"loads: axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm; "
+          f"centrifugal force {result.centrifugal_force:.2f} N per ball (cage {result.cage_speed:.2f} rad/s)")
+    print(f"{'ball':>4} {'psi deg':>8} {'Q_i N':>9} {'a_i deg':>8} {'Q_o N':>9} {'a_o deg':>8} {'d_i um':>8} {'d_o um':>8}")
+    for j in range(b.balls):
+        print(f"{j:4d} {math.degrees(result.azimuth[j]):8.1f} {result.inner_load[j]:9.2f} "
+              f"{math.degrees(result.inner_contact_angle[j]):8.2f} {result.outer_load[j]:9.2f} "
+              f"{math.degrees(result.outer_contact_angle[j]):8.2f} {result.inner_deflection[j] * 1e6:8.3f} "
+              f"{result.outer_deflection[j] * 1e6:8.3f}")
+    dx, dy, dz = result.displacement * 1e6
+    print(f"inner-race displacement: x {dx:.3f} um, y {dy:.3f} um, axial {dz:.3f} um; "
+          f"tilt {np.degrees(result.tilt).round(6).tolist()} deg; max contact load {result.max_load:.1f} N")
+    if np.any(result.reaction_moment != 0):
+        print(f"reaction moment on the shaft (tilt held): {result.reaction_moment.round(4).tolist()} N m")
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
+                                     description="Skidding analysis of angular-contact ball bearings with Exudyn.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("loads", help="quasi-static load distribution (MODEL.md §4)")
+    p.add_argument("--axial", type=float, default=0.0, help="axial force on the inner race, N")
+    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--rpm", type=float, default=0.0, help="inner-race speed, rev/min (0: no centrifugal force)")
+    p.add_argument("--moment", type=float, nargs=2, metavar=("MX", "MY"), help="tilting moment, N m (frees the tilt)")
+    p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
+    p.add_argument("--fixed-angle", action="store_true", help="the paper's fixed contact angle (P4–P6)")
+    p.add_argument("--hold-axial", action="store_true", help="hold the axial displacement at zero")
+    p.add_argument("--exact-hertz", action="store_true", help="exact elliptic integrals instead of Brewe–Hamrock")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    p.set_defaults(func=_loads)
+    return parser
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except ValueError as err:
+        parser.exit(2, f"error: {err}\n")
+    except RuntimeError as err:  # solver failures carry their own explanation
+        parser.exit(1, f"error: {err}\n")

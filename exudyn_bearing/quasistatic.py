@@ -1,0 +1,409 @@
+"""Quasi-static load distribution of an angular-contact ball bearing (MODEL.md §4, P4–P6).
+
+Two modes:
+
+``geometric`` (default)
+    Rigid rings, Hertz balls. Each ball centre is free in its meridional plane (its
+    azimuth is held by the cage, which takes any circumferential force); the inner and
+    outer contact angles follow from the displaced groove-centre circles (torus
+    geometry of MODEL.md §2), and the full centrifugal force m r_c w_c² enters each
+    ball's own force balance. The inner race moves by (dx, dy, dz) and, if a tilting
+    moment is given, tilts by (theta_x, theta_y).
+``fixed-angle``
+    The paper's P4–P6: every ball keeps the free contact angle a0, the ball load is
+    K_eff delta^(3/2) with delta projected on the fixed contact line, and half the
+    centrifugal force, projected on that line, is subtracted in the inner-race balance.
+
+Frames: bearing axis z, the radial force acts along +x on the inner race, the axial
+force along +z (towards the side that loads the inner contacts), ball j sits at
+azimuth psi_j = 2 pi j / Z (ball 0 at +x, the most loaded under radial load). The
+outer race is fixed.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, asdict
+
+import numpy as np
+
+from contact import geometry
+from contact.hertz import effective_ball_stiffness
+from .bearing import Bearing
+
+__all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
+
+
+class QuasiStaticError(RuntimeError):
+    """The Newton–Raphson load-distribution solve did not converge."""
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Per-ball result of :func:`solve_load_distribution` (arrays of length Z, SI units)."""
+
+    mode: str  #: 'geometric' or 'fixed-angle'
+    azimuth: np.ndarray  #: ball position angles psi_j, rad
+    inner_load: np.ndarray  #: Q_i, N
+    outer_load: np.ndarray  #: Q_o, N
+    inner_contact_angle: np.ndarray  #: rad, positive as the free angle
+    outer_contact_angle: np.ndarray  #: rad
+    inner_deflection: np.ndarray  #: Hertz approach delta_i, m (negative: gap)
+    outer_deflection: np.ndarray  #: m
+    ball_radius_offset: np.ndarray  #: orbit radius of the ball centre minus r_p, m
+    ball_axial_offset: np.ndarray  #: axial ball-centre position, m
+    displacement: np.ndarray  #: inner-race (dx, dy, dz), m
+    tilt: np.ndarray  #: inner-race (theta_x, theta_y), rad
+    reaction_moment: np.ndarray  #: (M_x, M_y) the shaft must supply when tilt is held, N m
+    centrifugal_force: float  #: m r_p w_c² per ball, N
+    cage_speed: float  #: pure-rolling cage speed used for it, rad/s
+    cage_force: np.ndarray  #: circumferential force the cage puts on each ball, N (along +psi)
+    ball_residual: np.ndarray  #: |force balance of each ball| / (max contact load), -
+    iterations: int
+
+    @property
+    def max_load(self) -> float:
+        """Largest contact load in the bearing, N."""
+        return float(max(self.inner_load.max(), self.outer_load.max()))
+
+    def to_dict(self) -> dict:
+        """JSON-ready dictionary (lists, SI units, angles in rad)."""
+        out = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in asdict(self).items()}
+        out["ball_loads_inner"] = out.pop("inner_load")
+        out["ball_loads_outer"] = out.pop("outer_load")
+        out["contact_angles_inner"] = out.pop("inner_contact_angle")
+        out["contact_angles_outer"] = out.pop("outer_contact_angle")
+        dx, dy, dz = self.displacement
+        out["displacement"] = {"axial": float(dz), "radial": float(math.hypot(dx, dy)), "x": float(dx), "y": float(dy), "z": float(dz)}
+        return out
+
+
+def _rotation(theta_x: float, theta_y: float) -> np.ndarray:
+    """Rotation matrix of the rotation vector (theta_x, theta_y, 0) (Rodrigues)."""
+    v = np.array([theta_x, theta_y, 0.0])
+    angle = np.linalg.norm(v)
+    if angle < 1e-300:
+        return np.eye(3)
+    k = v / angle
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+
+
+def _check_load(name: str, value) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+        raise ValueError(f"{name} must be a finite number, got {value!r}")
+    if value < 0:
+        raise ValueError(f"{name} must be non-negative, got {value!r} (reverse the frame instead)")
+    return float(value)
+
+
+class _Geometric:
+    """Ball and race force balances of the geometric mode for one operating point."""
+
+    def __init__(self, bearing: Bearing, centrifugal: float, hertz_method: str):
+        self.b = bearing
+        self.z = bearing.balls
+        self.psi = 2.0 * np.pi * np.arange(self.z) / self.z
+        self.e_r = np.stack([np.cos(self.psi), np.sin(self.psi), np.zeros(self.z)], axis=1)
+        self.e_z = np.array([0.0, 0.0, 1.0])
+        (self.ri, self.zi), (self.ro, self.zo) = bearing.groove_centres()
+        self.ti = (bearing.inner_conformity - 0.5) * bearing.ball_diameter
+        self.to = (bearing.outer_conformity - 0.5) * bearing.ball_diameter
+        self.fc = centrifugal
+        self.method = hertz_method
+
+    def centres(self, offsets: np.ndarray) -> np.ndarray:
+        return (self.b.pitch_radius + offsets[:, :1]) * self.e_r + offsets[:, 1:2] * self.e_z
+
+    def contacts(self, offsets, x):
+        """Loads, normals (global), deflections, angles, stiffness-matrix factors."""
+        c = self.centres(offsets)
+        rot = _rotation(x[3], x[4])
+        inner = geometry.groove_contact((c - x[:3]) @ rot, self.ri, self.zi, self.ti, "inner")
+        outer = geometry.groove_contact(c, self.ro, self.zo, self.to, "outer")
+        out = {}
+        for name, con, n in (("inner", inner, inner.normal @ rot.T), ("outer", outer, outer.normal)):
+            k = self.b.hertz(con.contact_angle, name, self.method).stiffness
+            pen = np.maximum(con.penetration, 0.0)
+            load = k * pen ** 1.5
+            out[name] = dict(load=load, normal=n, deflection=con.penetration, angle=con.contact_angle,
+                             dload=1.5 * k * np.sqrt(pen), distance=con.distance)
+        return out, c
+
+    def ball_residual(self, offsets, x):
+        con, _ = self.contacts(offsets, x)
+        force = self.fc * self.e_r
+        for side in con.values():
+            force = force - side["load"][:, None] * side["normal"]
+        return np.stack([np.einsum("ij,ij->i", force, self.e_r), force[:, 2]], axis=1), con
+
+    def ball_jacobian(self, con):
+        """d(residual)/d(offsets), shape (Z, 2, 2): minus the contact stiffness matrices
+        S = Q' n nT + Q/|d| (I - n nT), projected on (e_r, e_z)."""
+        basis = np.stack([self.e_r, np.broadcast_to(self.e_z, self.e_r.shape)], axis=2)  # (Z,3,2)
+        jac = np.zeros((self.z, 2, 2))
+        for side in con.values():
+            n = side["normal"]
+            nn = n[:, :, None] * n[:, None, :]
+            s = side["dload"][:, None, None] * nn + (side["load"] / side["distance"])[:, None, None] * (np.eye(3) - nn)
+            jac -= np.einsum("zia,zij,zjb->zab", basis, s, basis)
+        return jac
+
+    def initial_offsets(self, x) -> np.ndarray:
+        """Balls on the line between the groove centres, deflections split by stiffness
+        (exact without centrifugal force up to the angle dependence of K); balls only
+        touching the outer race are pushed onto it by the centrifugal force."""
+        rot = _rotation(x[3], x[4])
+        offsets = np.zeros((self.z, 2))
+        g_i = (self.ri * self.e_r + self.zi * self.e_z) @ rot.T + x[:3]
+        g_o = self.ro * self.e_r + self.zo * self.e_z
+        sep_vec = g_i - g_o
+        sep = np.linalg.norm(sep_vec, axis=1)
+        u = sep_vec / sep[:, None]
+        total = sep - (self.ti + self.to)
+        ki = self.b.hertz(self.b.contact_angle, "inner", self.method).stiffness
+        ko = self.b.hertz(self.b.contact_angle, "outer", self.method).stiffness
+        share_o = 1.0 / (1.0 + (ko / ki) ** (2.0 / 3.0))  # delta_o / delta_total at equal loads
+        c = g_o + (self.to + np.where(total > 0, total * share_o, 0.5 * total))[:, None] * u
+        if self.fc > 0:
+            ko_r = self.b.hertz(0.0, "outer", self.method).stiffness
+            c_out = g_o + (self.to + (self.fc / ko_r) ** (2.0 / 3.0)) * self.e_r
+            c = np.where((total <= 0)[:, None], c_out, c)
+        offsets[:, 0] = np.einsum("ij,ij->i", c, self.e_r) - self.b.pitch_radius
+        offsets[:, 1] = c[:, 2]
+        return offsets
+
+    def solve_balls(self, x, offsets=None, tol=1e-10, max_iter=60):
+        """Newton on each ball's 2-D force balance (vectorized over balls). ``tol`` is
+        relative to the ball's largest load; rounding of the ball position (1e-17 m times
+        a contact stiffness of ~4e7 N/m) puts the floor near 1e-11."""
+        if offsets is None:
+            offsets = self.initial_offsets(x)
+        offsets = offsets.copy()
+        max_step = 0.25 * min(self.ti, self.to)
+        for it in range(max_iter):
+            res, con = self.ball_residual(offsets, x)
+            scale = np.maximum(np.maximum(con["inner"]["load"], con["outer"]["load"]), self.fc) + 1e-300
+            norm = np.linalg.norm(res, axis=1)
+            active = norm > tol * np.maximum(scale, 1.0)  # floor: 1e-10 N for (nearly) unloaded balls
+            if not np.any(active):
+                return offsets, con, it
+            jac = self.ball_jacobian(con)
+            det = np.linalg.det(jac)
+            singular = np.abs(det) < 1e-300
+            # A ball touching neither race with no centrifugal force carries nothing:
+            # any position between the grooves is an equilibrium.
+            loose = singular & (self.fc == 0)
+            active &= ~loose
+            if not np.any(active):
+                return offsets, con, it
+            if np.any(singular & active):
+                offsets[singular & active] = self.initial_offsets(x)[singular & active] + np.array([1e-9, 0.0])
+                continue
+            step = -np.linalg.solve(jac[active], res[active][:, :, None])[:, :, 0]
+            length = np.linalg.norm(step, axis=1)
+            step *= np.minimum(1.0, max_step / np.maximum(length, 1e-300))[:, None]
+            # backtracking: accept the largest of 1, 1/2, 1/4, ... that reduces |residual|
+            lam = np.ones(active.sum())
+            trial = offsets.copy()
+            for _ in range(30):
+                trial[active] = offsets[active] + lam[:, None] * step
+                new_norm = np.linalg.norm(self.ball_residual(trial, x)[0][active], axis=1)
+                worse = new_norm > norm[active] * (1 - 1e-4 * lam)
+                if not np.any(worse):
+                    break
+                lam = np.where(worse, 0.5 * lam, lam)
+            offsets = trial
+        res, con = self.ball_residual(offsets, x)
+        raise QuasiStaticError(
+            f"ball force balance did not converge in {max_iter} Newton iterations "
+            f"(largest residual {np.abs(res).max():.3g} N at ball {int(np.abs(res).max(axis=1).argmax())})")
+
+    def race_forces(self, con, centres):
+        """Force and moment (about the bearing centre) the balls apply to the inner race."""
+        q, n = con["inner"]["load"], con["inner"]["normal"]
+        f = q[:, None] * n
+        points = centres + self.b.ball_radius * n
+        return f.sum(axis=0), np.cross(points, f).sum(axis=0)
+
+
+def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, method, tol, max_iter):
+    """Paper P4–P6 with fixed contact angle a0 (translations only)."""
+    z, alpha = bearing.balls, bearing.contact_angle
+    psi = 2.0 * np.pi * np.arange(z) / z
+    e = np.stack([np.cos(psi) * math.cos(alpha), np.sin(psi) * math.cos(alpha), np.full(z, math.sin(alpha))], axis=1)
+    k_i = bearing.hertz(alpha, "inner", method).stiffness
+    k_o = bearing.hertz(alpha, "outer", method).stiffness
+    k_eff = float(effective_ball_stiffness(k_i, k_o))
+    free = [0, 1] if hold_axial else [0, 1, 2]
+    target = np.array([radial, 0.0, axial])
+    fc_line = 0.5 * centrifugal * math.cos(alpha)  # P6: 1/2 m r_p w_c² cos(beta)
+
+    def residual(x):
+        delta = e @ x
+        q = k_eff * np.maximum(delta, 0.0) ** 1.5
+        loaded = delta > 0
+        force = ((q - fc_line) * loaded) @ e
+        dq = 1.5 * k_eff * np.sqrt(np.maximum(delta, 0.0))
+        jac = (e * dq[:, None]).T @ e
+        return force - target, jac, q, delta
+
+    # start: every ball loaded by the axial force, the radial one as Stribeck's 5 F_r/(Z cos a)
+    q0 = (axial / (z * math.sin(alpha)) if axial > 0 else 0.0) + fc_line
+    x = np.zeros(3)
+    x[2] = 0.0 if hold_axial else (max(q0, 1e-3) / k_eff) ** (2 / 3) / math.sin(alpha)
+    if radial > 0:
+        x[0] = (5 * radial / (z * math.cos(alpha) * k_eff)) ** (2 / 3) / math.cos(alpha)
+    scale = max(axial, radial, 1.0)
+    for it in range(max_iter):
+        res, jac, q, delta = residual(x)
+        if np.linalg.norm(res[free]) < tol * scale:
+            break
+        try:
+            step = np.linalg.solve(jac[np.ix_(free, free)], -res[free])
+        except np.linalg.LinAlgError:
+            raise QuasiStaticError("fixed-angle solve: no ball in contact (singular Jacobian)") from None
+        lam, norm0 = 1.0, np.linalg.norm(res[free])
+        for _ in range(40):
+            trial = x.copy()
+            trial[free] += lam * step
+            if np.linalg.norm(residual(trial)[0][free]) < norm0 * (1 - 1e-4 * lam):
+                break
+            lam *= 0.5
+        x = trial
+    else:
+        raise QuasiStaticError(f"fixed-angle Newton–Raphson did not converge in {max_iter} iterations "
+                               f"(residual {np.linalg.norm(res[free]):.3g} N)")
+    res, jac, q, delta = residual(x)
+    q_inner = np.where(q > 0, q - fc_line, 0.0)
+    q_outer = np.where(q > 0, q + fc_line, 0.0)
+    return x, q_inner, q_outer, (q_inner / k_i) ** (2 / 3), (q_outer / k_o) ** (2 / 3), it, k_eff, delta
+
+
+def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float = 0.0, rpm: float = 0.0,
+                            *, moment: tuple[float, float] | None = None, mode: str = "geometric",
+                            hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
+                            max_iter: int = 60) -> LoadDistribution:
+    """Quasi-static load distribution (MODEL.md §4).
+
+    Parameters
+    ----------
+    bearing : Bearing
+    axial, radial : float
+        Applied forces on the inner race, N (axial along +z, radial along +x), >= 0.
+    rpm : float
+        Inner-race speed, rev/min (outer race fixed); sets the cage speed and the
+        centrifugal force m r_p w_c² per ball. 0: no centrifugal force.
+    moment : (M_x, M_y), optional
+        Applied tilting moment on the inner race about the bearing centre, N m. If
+        given, the inner race tilts until it is balanced; otherwise its tilt is held at
+        zero and the moment the shaft must supply is returned as ``reaction_moment``.
+    mode : {'geometric', 'fixed-angle'}
+        See the module docstring.
+    hold_axial : bool
+        Hold the axial inner-race displacement at zero (the axial force becomes a
+        reaction), e.g. pure radial load on a single angular-contact bearing.
+    hertz_method : {'fit', 'exact'}
+        Brewe–Hamrock fits or exact elliptic integrals for the Hertz stiffness.
+    tol : float
+        Relative force-balance tolerance of the Newton–Raphson iterations.
+
+    Raises
+    ------
+    ValueError
+        Bad input (negative or NaN load, unknown mode).
+    QuasiStaticError
+        Newton–Raphson did not converge (e.g. a radial load with no axial force on a
+        bearing that cannot carry it).
+    """
+    axial, radial, rpm = _check_load("axial", axial), _check_load("radial", radial), _check_load("rpm", rpm)
+    if moment is not None:
+        moment = tuple(float(m) for m in moment)
+        if len(moment) != 2 or not all(math.isfinite(m) for m in moment):
+            raise ValueError(f"moment must be two finite numbers (M_x, M_y) in N m, got {moment!r}")
+    if mode not in ("geometric", "fixed-angle"):
+        raise ValueError(f"mode must be 'geometric' or 'fixed-angle', got {mode!r}")
+    if axial == 0 and radial == 0 and moment is None and not hold_axial:
+        raise ValueError("axial, radial: at least one load is needed for a load distribution")
+    if axial == 0 and radial > 0 and not hold_axial and mode == "fixed-angle":
+        raise ValueError("axial: with fixed contact angles an angular-contact bearing has no equilibrium under "
+                         "radial load alone; give an axial force or hold_axial=True")
+    cage = bearing.cage_speed(rpm * math.pi / 30.0)
+    centrifugal = bearing.ball_mass * bearing.pitch_radius * cage ** 2
+    z = bearing.balls
+    psi = 2.0 * np.pi * np.arange(z) / z
+
+    if mode == "fixed-angle":
+        if moment is not None:
+            raise ValueError("moment: the fixed-angle mode (paper P4) has no tilt; use mode='geometric'")
+        x, qi, qo, di, do, it, k_eff, delta = _fixed_angle(bearing, axial, radial, centrifugal, hold_axial,
+                                                           hertz_method, tol, max_iter)
+        alpha = np.full(z, bearing.contact_angle)
+        zeros = np.zeros(z)
+        return LoadDistribution("fixed-angle", psi, qi, qo, alpha, alpha.copy(), np.where(qi > 0, di, delta),
+                                np.where(qo > 0, do, delta), zeros, zeros.copy(), x, np.zeros(2), np.zeros(2),
+                                centrifugal, cage, zeros.copy(), zeros.copy(), it)
+
+    model = _Geometric(bearing, centrifugal, hertz_method)
+    # start from the fixed-angle answer without centrifugal force
+    x = np.zeros(5)
+    if axial > 0 or hold_axial:
+        x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+    free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])
+    target = np.concatenate([[radial, 0.0, axial], moment if moment is not None else [0.0, 0.0]])
+    length = bearing.pitch_radius  # moments scaled to forces
+    steps = np.array([1e-9, 1e-9, 1e-9, 1e-9 / length, 1e-9 / length])
+    scale = max(axial, radial, 1.0, *(abs(m) / length for m in (moment or ())))
+    state = {"offsets": None}
+
+    def race_residual(xx, keep=False):
+        offsets, con, _ = model.solve_balls(xx, state["offsets"])
+        if keep:
+            state["offsets"] = offsets
+        force, mom = model.race_forces(con, model.centres(offsets))
+        r = np.concatenate([force, mom[:2] / length]) + target * np.array([1, 1, 1, 1 / length, 1 / length])
+        return r[free], offsets, con
+
+    history = []
+    for it in range(max_iter):
+        res, offsets, con = race_residual(x, keep=True)
+        history.append(np.linalg.norm(res))
+        if history[-1] < tol * scale:
+            break
+        jac = np.empty((len(free), len(free)))
+        for col, dof in enumerate(free):
+            xp, xm = x.copy(), x.copy()
+            xp[dof] += steps[dof]
+            xm[dof] -= steps[dof]
+            jac[:, col] = (race_residual(xp)[0] - race_residual(xm)[0]) / (2 * steps[dof])
+        try:
+            step = np.linalg.solve(jac, -res)
+        except np.linalg.LinAlgError:
+            raise QuasiStaticError("geometric solve: singular race stiffness (no ball carries load in some "
+                                   "direction; add axial load or hold_axial=True)") from None
+        lam = 1.0
+        for _ in range(40):
+            trial = x.copy()
+            trial[free] += lam * step
+            try:
+                if np.linalg.norm(race_residual(trial)[0]) < history[-1] * (1 - 1e-4 * lam):
+                    break
+            except QuasiStaticError:
+                pass
+            lam *= 0.5
+        x = trial
+    else:
+        hint = " (radial load alone: give an axial force or hold_axial=True)" if axial == 0 else ""
+        raise QuasiStaticError(f"geometric Newton–Raphson did not converge in {max_iter} iterations; "
+                               f"force residual {history[-1]:.3g} N{hint}")
+    res, con = model.ball_residual(offsets, x)
+    force, mom = model.race_forces(con, model.centres(offsets))
+    reaction = np.zeros(2) if moment is not None else -mom[:2]
+    # a radially displaced inner race tilts its meridional planes: the inner normal gets a
+    # small circumferential part, which the cage (holding the azimuth) takes
+    e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
+    cage_force = np.einsum("ij,ij->i", con["inner"]["load"][:, None] * con["inner"]["normal"], e_psi)
+    q_scale = np.maximum(np.maximum(con["inner"]["load"], con["outer"]["load"]), 1e-300)
+    return LoadDistribution(
+        "geometric", psi, con["inner"]["load"], con["outer"]["load"], con["inner"]["angle"], con["outer"]["angle"],
+        con["inner"]["deflection"], con["outer"]["deflection"], offsets[:, 0].copy(), offsets[:, 1].copy(),
+        x[:3].copy(), x[3:].copy(), reaction, centrifugal, cage, cage_force, np.linalg.norm(res, axis=1) / q_scale, it)

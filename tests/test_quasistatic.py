@@ -1,0 +1,153 @@
+"""Quasi-static load distribution (MODEL.md §4) against independent numbers."""
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize
+
+from contact import geometry, hertz
+from exudyn_bearing import REFERENCE_BEARING as B, QuasiStaticError, solve_load_distribution
+
+E_PRIME = float(hertz.effective_modulus(210e9, 0.3))
+
+
+def k_eff_at(alpha):
+    """Series Hertz stiffness of one ball at contact angle alpha, built from contact/ only."""
+    ks = [hertz.hertz_contact(*geometry.curvature_radii(25e-3, 155e-3, alpha, 0.52, race), E_PRIME).stiffness
+          for race in ("inner", "outer")]
+    return float(hertz.effective_ball_stiffness(*ks))
+
+
+def test_pure_axial_rpm0_matches_jones_harris_thrust_equation():
+    """Harris (Rolling Bearing Analysis, pure thrust): F_a = Z K (A (cos a0/cos a - 1))^1.5 sin a."""
+    fa, a_dist, a0 = 1300.0, 1e-3, math.radians(40)
+    alpha = optimize.brentq(lambda a: 16 * k_eff_at(a) * (a_dist * (math.cos(a0) / math.cos(a) - 1)) ** 1.5
+                            * math.sin(a) - fa, a0 + 1e-9, a0 + 0.3)
+    q_ref = fa / (16 * math.sin(alpha))
+    res = solve_load_distribution(B, axial=fa, rpm=0)
+    np.testing.assert_allclose(res.inner_load, q_ref, rtol=2e-3)  # K differs slightly inner vs outer angle
+    np.testing.assert_allclose(res.inner_contact_angle, alpha, atol=2e-4)
+    assert res.inner_load[0] == pytest.approx(126, abs=1.5)  # MODEL.md: ~126 N at ~40.3 deg
+    assert math.degrees(res.inner_contact_angle[0]) == pytest.approx(40.3, abs=0.1)
+
+
+def test_combined_rpm0_max_load_and_unloaded_zone():
+    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=0)
+    assert res.max_load == pytest.approx(650, rel=0.05)  # paper: 650 N; MODEL.md: ~658 N
+    assert (res.inner_load > 0).sum() == 9  # MODEL.md §9: 9 balls loaded
+    assert np.all(res.inner_load[np.abs(np.cos(res.azimuth)) > 0.99][1:] == 0) or res.inner_load[8] == 0
+    _check_race_balance(res, 2200, 2000)
+
+
+def _check_race_balance(res, fa, fr):
+    """Inner-race balance from the returned loads, angles and circumferential (cage) forces."""
+    qi, ai, psi = res.inner_load, res.inner_contact_angle, res.azimuth
+    assert np.sum(qi * np.sin(ai)) == pytest.approx(fa, rel=1e-6)
+    in_plane = np.sqrt(np.maximum(qi ** 2 - res.cage_force ** 2, 0.0))  # |Q n| minus its circumferential part
+    radial_x = np.sum(in_plane * np.cos(ai) * np.cos(psi) + res.cage_force * np.sin(psi))
+    assert radial_x == pytest.approx(fr, rel=1e-6, abs=1e-6 * fa)
+
+
+@pytest.mark.parametrize("fa,inner,outer", [(1300, (115, 44.9), (141, 35.1)), (200, (None, 55), (None, 16))])
+def test_centrifugal_force_splits_contact_angles_at_1800rpm(fa, inner, outer):
+    res = solve_load_distribution(B, axial=fa, rpm=1800)
+    fc = 0.064 * 0.0775 * (1800 * math.pi / 30 / 2 * (1 - 25 * math.cos(math.radians(40)) / 155)) ** 2
+    assert res.centrifugal_force == pytest.approx(fc, rel=1e-12) and fc == pytest.approx(34, abs=0.5)
+    for (q_ref, a_ref), q, a in ((inner, res.inner_load, res.inner_contact_angle),
+                                 (outer, res.outer_load, res.outer_contact_angle)):
+        if q_ref is not None:
+            np.testing.assert_allclose(q, q_ref, rtol=0.01)
+        np.testing.assert_allclose(np.degrees(a), a_ref, atol=0.5)
+    # each ball's own balance: contact forces + centrifugal, closes to 1e-6 of its load
+    radial = res.outer_load * np.cos(res.outer_contact_angle) - res.inner_load * np.cos(res.inner_contact_angle) - fc
+    axial = res.outer_load * np.sin(res.outer_contact_angle) - res.inner_load * np.sin(res.inner_contact_angle)
+    assert np.max(np.hypot(radial, axial) / res.outer_load) < 1e-6
+    _check_race_balance(res, fa, 0.0)
+
+
+def test_combined_1800rpm_every_ball_loaded():
+    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800)
+    assert res.inner_load.min() == pytest.approx(26, abs=2) and res.inner_load.max() == pytest.approx(890, rel=0.02)
+    _check_race_balance(res, 2200, 2000)
+
+
+def _sjovall(eps):
+    """Sjövall integrals J_r, J_a (Harris): loaded zone |psi| < psi_l, cos psi_l = 1 - 2 eps."""
+    psi_l = math.acos(max(-1.0, 1 - 2 * eps))
+    shape = lambda p: (1 - (1 - math.cos(p)) / (2 * eps)) ** 1.5
+    j_r = integrate.quad(lambda p: shape(p) * math.cos(p), -psi_l, psi_l)[0] / (2 * math.pi)
+    j_a = integrate.quad(shape, -psi_l, psi_l)[0] / (2 * math.pi)
+    return j_r, j_a
+
+
+def test_sjovall_reference_values():
+    j_r, _ = _sjovall(0.5)
+    assert j_r == pytest.approx(0.2288, abs=1e-4) and 1 / j_r == pytest.approx(4.37, abs=0.01)
+
+
+def test_fixed_angle_combined_load_matches_sjovall():
+    fa, fr, alpha = 2200.0, 2000.0, math.radians(40)
+    target = fr * math.tan(alpha) / fa
+    eps = optimize.brentq(lambda e: (lambda j: j[0] / j[1] - target)(_sjovall(e)), 0.01, 50)
+    q_max = fa / (16 * _sjovall(eps)[1] * math.sin(alpha))
+    res = solve_load_distribution(B, axial=fa, radial=fr, rpm=0, mode="fixed-angle")
+    assert res.max_load == pytest.approx(q_max, rel=0.02)  # 16 discrete balls vs the integral
+    assert res.max_load == pytest.approx(650, rel=0.05)
+
+
+def test_fixed_angle_pure_radial_is_stribeck():
+    fr, alpha = 2000.0, math.radians(40)
+    res = solve_load_distribution(B, radial=fr, rpm=0, mode="fixed-angle", hold_axial=True)
+    q_ref = fr / (16 * 0.2288 * math.cos(alpha))  # Q_max = 4.37 F_r / (Z cos a)
+    assert res.max_load == pytest.approx(q_ref, rel=0.02)
+    assert res.displacement[2] == 0.0
+
+
+def test_fixed_angle_axial_is_paper_p4_p5():
+    res = solve_load_distribution(B, axial=1300, rpm=0, mode="fixed-angle")
+    np.testing.assert_allclose(res.inner_load, 1300 / (16 * math.sin(math.radians(40))), rtol=1e-9)
+    delta = res.displacement[2] * math.sin(math.radians(40))
+    np.testing.assert_allclose(res.inner_load, k_eff_at(math.radians(40)) * delta ** 1.5, rtol=1e-9)
+
+
+def test_tilting_moment_balanced():
+    m_y = 10.0
+    res = solve_load_distribution(B, axial=2200, rpm=0, moment=(0.0, m_y))
+    assert abs(res.tilt[1]) > 0 and np.all(res.reaction_moment == 0)
+    # moment of the ball forces on the inner race about the centre (contact points at the
+    # ball centre minus r n_i, normals in the meridional plane; tilts are ~1e-4 rad)
+    r_c = B.pitch_radius + res.ball_radius_offset
+    n_r, n_z = -np.cos(res.inner_contact_angle), -np.sin(res.inner_contact_angle)
+    x = (r_c + B.ball_radius * n_r) * np.cos(res.azimuth)
+    f_x, f_z = res.inner_load * n_r * np.cos(res.azimuth), res.inner_load * n_z
+    z = res.ball_axial_offset + B.ball_radius * n_z
+    my_balls = np.sum(z * f_x - x * f_z)
+    assert my_balls + m_y == pytest.approx(0.0, abs=0.01 * m_y)
+
+
+def test_bad_input_and_no_equilibrium():
+    with pytest.raises(ValueError, match="axial"):
+        solve_load_distribution(B, axial=-5.0)
+    with pytest.raises(ValueError, match="radial"):
+        solve_load_distribution(B, axial=100, radial=float("nan"))
+    with pytest.raises(ValueError, match="axial"):
+        solve_load_distribution(B, radial=1000, mode="fixed-angle")
+    with pytest.raises(QuasiStaticError, match="did not converge"):
+        solve_load_distribution(B, axial=1000, max_iter=1)
+
+
+def test_cli_json():
+    out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--radial", "0",
+                          "--rpm", "0", "--json"], capture_output=True, text=True, check=True).stdout
+    data = json.loads(out)
+    assert len(data["ball_loads_inner"]) == 16 and len(data["contact_angles_outer"]) == 16
+    assert data["ball_loads_inner"][0] == pytest.approx(125.7, abs=0.5)
+    assert data["displacement"]["axial"] > 0 and data["displacement"]["radial"] == pytest.approx(0, abs=1e-9)
+    table = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--rpm", "1800",
+                            "--fixed-angle"], capture_output=True, text=True, check=True).stdout
+    assert "fixed-angle" in table
+    bad = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "-3"], capture_output=True, text=True)
+    assert bad.returncode == 2 and "axial" in bad.stderr
