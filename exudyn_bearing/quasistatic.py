@@ -282,7 +282,8 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
 def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float = 0.0, rpm: float = 0.0,
                             *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
-                            max_iter: int = 60) -> LoadDistribution:
+                            max_iter: int = 60, outer_rpm: float = 0.0,
+                            displacement=None) -> LoadDistribution:
     """Quasi-static load distribution (MODEL.md §4).
 
     Parameters
@@ -306,6 +307,12 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         Brewe–Hamrock fits or exact elliptic integrals for the Hertz stiffness.
     tol : float
         Relative force-balance tolerance of the Newton–Raphson iterations.
+    outer_rpm : float
+        Outer-race speed, rev/min (enters the cage speed only).
+    displacement : (dx, dy, dz[, theta_x, theta_y]), optional
+        Prescribe the inner-race displacement (m) and tilt (rad) instead of balancing
+        the applied loads (geometric mode): only the balls are solved; the loads are
+        then ignored.
 
     Raises
     ------
@@ -316,18 +323,20 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         bearing that cannot carry it).
     """
     axial, radial, rpm = _check_load("axial", axial), _check_load("radial", radial), _check_load("rpm", rpm)
+    if not math.isfinite(outer_rpm):
+        raise ValueError(f"outer_rpm must be finite, got {outer_rpm!r}")
     if moment is not None:
         moment = tuple(float(m) for m in moment)
         if len(moment) != 2 or not all(math.isfinite(m) for m in moment):
             raise ValueError(f"moment must be two finite numbers (M_x, M_y) in N m, got {moment!r}")
     if mode not in ("geometric", "fixed-angle"):
         raise ValueError(f"mode must be 'geometric' or 'fixed-angle', got {mode!r}")
-    if axial == 0 and radial == 0 and moment is None and not hold_axial:
+    if axial == 0 and radial == 0 and moment is None and not hold_axial and displacement is None:
         raise ValueError("axial, radial: at least one load is needed for a load distribution")
     if axial == 0 and radial > 0 and not hold_axial and mode == "fixed-angle":
         raise ValueError("axial: with fixed contact angles an angular-contact bearing has no equilibrium under "
                          "radial load alone; give an axial force or hold_axial=True")
-    cage = bearing.cage_speed(rpm * math.pi / 30.0)
+    cage = bearing.cage_speed(rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0)
     centrifugal = bearing.ball_mass * bearing.pitch_radius * cage ** 2
     z = bearing.balls
     psi = 2.0 * np.pi * np.arange(z) / z
@@ -346,7 +355,14 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     model = _Geometric(bearing, centrifugal, hertz_method)
     # start from the fixed-angle answer without centrifugal force
     x = np.zeros(5)
-    if axial > 0 or hold_axial:
+    if displacement is not None:
+        given = np.asarray(displacement, dtype=float)
+        if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
+            raise ValueError(f"displacement must be 3 or 5 finite numbers, got {displacement!r}")
+        x[:len(given)] = given
+        max_iter = 0
+        offsets, con, _ = model.solve_balls(x)
+    elif axial > 0 or hold_axial:
         x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
     free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])
     target = np.concatenate([[radial, 0.0, axial], moment if moment is not None else [0.0, 0.0]])
@@ -363,10 +379,11 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         r = np.concatenate([force, mom[:2] / length]) + target * np.array([1, 1, 1, 1 / length, 1 / length])
         return r[free], offsets, con
 
-    history = []
+    history = [0.0]
+    it = 0
     for it in range(max_iter):
         res, offsets, con = race_residual(x, keep=True)
-        history.append(np.linalg.norm(res))
+        history.append(float(np.linalg.norm(res)))
         if history[-1] < tol * scale:
             break
         jac = np.empty((len(free), len(free)))
@@ -392,9 +409,16 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
             lam *= 0.5
         x = trial
     else:
+        if max_iter == 0:  # prescribed displacement: nothing to balance
+            return _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, 0)
         hint = " (radial load alone: give an axial force or hold_axial=True)" if axial == 0 else ""
         raise QuasiStaticError(f"geometric Newton–Raphson did not converge in {max_iter} iterations; "
                                f"force residual {history[-1]:.3g} N{hint}")
+    return _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, it)
+
+
+def _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, it):
+    z = len(psi)
     res, con = model.ball_residual(offsets, x)
     force, mom = model.race_forces(con, model.centres(offsets))
     reaction = np.zeros(2) if moment is not None else -mom[:2]

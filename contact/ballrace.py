@@ -1,0 +1,153 @@
+"""Ball–race contact forces: Hertz normal force, EHD film and traction, spin moment
+(MODEL.md §3, §5, §6), vectorized over contacts.
+
+Given the kinematics of :mod:`contact.kinematics`, :func:`ball_race_forces` returns the
+force on each ball (acting at the contact centre p) and the moment on the ball about
+its centre, (p - c) x F + M_z n. The race receives -F at p and -M_z n.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import film, geometry, hertz
+from .kinematics import ContactKinematics, cross
+from .lubricant import Lubricant
+
+__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS"]
+
+TRACTION_MODELS = ("crook", "none")
+
+
+@dataclass(frozen=True)
+class RaceContact:
+    """Geometry and material of one race's contacts (MODEL.md §2–§3).
+
+    Parameters
+    ----------
+    ball_diameter, pitch_diameter : float
+        D and d_m, m (for the curvature radii).
+    conformity : float
+        Groove radius / D of this race.
+    race : {'inner', 'outer'}
+    effective_modulus : float
+        E', Pa.
+    ball_mass : float
+        kg; scales the normal contact damping.
+    """
+
+    ball_diameter: float
+    pitch_diameter: float
+    conformity: float
+    race: str
+    effective_modulus: float
+    ball_mass: float
+
+    def hertz(self, contact_angle, method="fit"):
+        r_x, r_y = geometry.curvature_radii(self.ball_diameter, self.pitch_diameter, contact_angle,
+                                            self.conformity, self.race)
+        return r_x, hertz.hertz_contact(r_x, r_y, self.effective_modulus, method)
+
+
+@dataclass(frozen=True)
+class ContactLaw:
+    """Which physics a ball–race contact computes.
+
+    Parameters
+    ----------
+    traction : {'crook', 'none'}
+        Crook thermal EHD traction (MODEL.md §6) or normal forces only.
+    spin_moment : bool
+        Apply the traction spin moment M_z (P16).
+    quadrature_order : int
+        Order of the traction quadrature (:func:`contact.traction.crook_traction`).
+    damping_ratio : float
+        Normal contact damping as a fraction of critical for the ball mass on the
+        linearized Hertz stiffness (damps the ~0.2 ms contact oscillations; the EHD film
+        damps them in reality). 0: none.
+    min_film_thickness : float
+        Floor on the Hamrock–Dowson film thickness, m (the formula gives 0 at zero
+        entrainment speed, e.g. a start from rest).
+    limiting_shear : float or None
+        Limiting shear-stress coefficient Lambda (tau <= Lambda p); None: off (paper).
+    hertz_method : {'fit', 'exact'}
+    """
+
+    traction: str = "crook"
+    spin_moment: bool = True
+    quadrature_order: int = 16
+    damping_ratio: float = 0.05
+    min_film_thickness: float = 1e-8
+    limiting_shear: float | None = None
+    hertz_method: str = "fit"
+
+    def __post_init__(self) -> None:
+        if self.traction not in TRACTION_MODELS:
+            raise ValueError(f"traction must be one of {TRACTION_MODELS}, got {self.traction!r}")
+        if not (isinstance(self.quadrature_order, int) and self.quadrature_order >= 2):
+            raise ValueError(f"quadrature_order must be an integer >= 2, got {self.quadrature_order!r}")
+        if not (np.isfinite(self.damping_ratio) and self.damping_ratio >= 0):
+            raise ValueError(f"damping_ratio must be >= 0, got {self.damping_ratio!r}")
+        if not (np.isfinite(self.min_film_thickness) and self.min_film_thickness > 0):
+            raise ValueError(f"min_film_thickness must be positive, got {self.min_film_thickness!r}")
+        if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
+            raise ValueError(f"limiting_shear must be positive or None, got {self.limiting_shear!r}")
+
+
+@dataclass(frozen=True)
+class ContactForces:
+    """Per-contact forces and states (global frame, SI units)."""
+
+    force: np.ndarray  #: force on the ball at the contact centre, (n, 3), N
+    moment: np.ndarray  #: moment on the ball about its centre, (n, 3), N m
+    normal_load: np.ndarray  #: Q (Hertz + damping, >= 0), N
+    traction_rolling: np.ndarray  #: f_x on the ball along t1, N
+    traction_transverse: np.ndarray  #: f_y on the ball along t2, N
+    spin_moment: np.ndarray  #: M_z on the ball about n, N m
+    film_thickness: np.ndarray  #: h_c, m (0 where unloaded)
+    max_pressure: np.ndarray  #: p_max, Pa
+    heat: np.ndarray  #: integral of tau . u over the patch, W
+
+
+def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lubricant,
+                     law: ContactLaw = ContactLaw()) -> ContactForces:
+    """Forces of n ball–race contacts from their kinematics (MODEL.md §3, §5, §6).
+
+    Normal: Q = K delta^(3/2) + c d(delta)/dt, c = 2 zeta sqrt(1.5 K delta^(1/2) m),
+    clipped at 0 (a contact cannot pull). Traction on the loaded contacts from the
+    Crook model with the Hamrock–Dowson central film (at least ``min_film_thickness``).
+    """
+    n_con = kin.penetration.shape[0]
+    r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
+    delta = np.maximum(kin.penetration, 0.0)
+    load = contact.stiffness * delta ** 1.5
+    if law.damping_ratio > 0:
+        damping = 2.0 * law.damping_ratio * np.sqrt(1.5 * contact.stiffness * np.sqrt(delta) * params.ball_mass)
+        load = load + damping * kin.penetration_rate
+    load = np.where(kin.penetration > 0, np.maximum(load, 0.0), 0.0)
+    fx = np.zeros(n_con)
+    fy = np.zeros(n_con)
+    mz = np.zeros(n_con)
+    heat = np.zeros(n_con)
+    h = np.zeros(n_con)
+    p_max = contact.max_pressure(load)
+    loaded = load > 0
+    if law.traction == "crook" and np.any(loaded):
+        from .traction import crook_traction
+
+        idx = np.flatnonzero(loaded)
+        a, b = contact.semi_axes(load[idx])
+        h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
+                                          params.effective_modulus, lubricant)
+        h[idx] = np.maximum(h_c, law.min_film_thickness)
+        # spin still shapes the local slip field when its moment is switched off
+        tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_max[idx], h[idx],
+                            lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear)
+        fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
+        if law.spin_moment:
+            mz[idx] = tr.mz
+    force = -load[:, None] * kin.normal + fx[:, None] * kin.rolling + fy[:, None] * kin.transverse
+    # lever arm p - c = r n: the normal force has no moment about the ball centre
+    moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
+    return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat)

@@ -1,0 +1,78 @@
+"""Ball–cage interaction and ball drag (MODEL.md §1, §8; paper P9, P10), vectorized.
+
+Forces act at the ball centres (a pocket pushes the ball along its circumferential
+direction through the centre), so they put no moment on the balls; the cage receives
+the opposite force at the same point.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .kinematics import cross
+
+__all__ = ["pocket_forces", "spring_chain_forces", "drag_forces"]
+
+
+def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_velocity, cage_omega,
+                  pocket_angles, pitch_radius, clearance, stiffness, damping):
+    """Pocket contact forces on the balls, (n, 3), N.
+
+    Pocket j sits at angle phi_j on the pitch circle of the cage frame; s_j is the ball
+    centre's offset from the pocket centre along the pocket's circumferential direction
+    e_j. With half-clearance g = clearance/2 the force on the ball is
+    -(k (|s| - g) + c ds/dt sign(s)) sign(s) e_j when |s| > g (clipped so a pocket
+    never pulls), zero otherwise; clearance 0 gives the paper's bilateral spring.
+
+    Parameters
+    ----------
+    ball_centre, ball_velocity : ndarray, (n, 3)
+    cage_origin, cage_velocity, cage_omega : ndarray, (3,)
+    cage_rotation : ndarray, (3, 3)
+        Cage frame -> global; third column is the bearing axis.
+    pocket_angles : ndarray, (n,)
+        rad, in the cage frame.
+    pitch_radius, clearance : float
+        m (clearance: circumferential play of a ball in its pocket).
+    stiffness, damping : float
+        N/m, N s/m.
+    """
+    local_centre = np.stack([np.cos(pocket_angles), np.sin(pocket_angles), np.zeros_like(pocket_angles)], axis=1)
+    local_dir = np.stack([-np.sin(pocket_angles), np.cos(pocket_angles), np.zeros_like(pocket_angles)], axis=1)
+    centre = cage_origin + pitch_radius * local_centre @ cage_rotation.T
+    e = local_dir @ cage_rotation.T
+    s = np.einsum("ij,ij->i", ball_centre - centre, e)
+    v_pocket = cage_velocity + cross(cage_omega, centre - cage_origin)
+    s_dot = np.einsum("ij,ij->i", ball_velocity - v_pocket, e)
+    gap = 0.5 * clearance
+    if gap == 0:
+        magnitude = -stiffness * s - damping * s_dot
+    else:
+        sign = np.sign(s)
+        pen = np.abs(s) - gap
+        magnitude = np.where(pen > 0, -sign * np.maximum(stiffness * pen + damping * s_dot * sign, 0.0), 0.0)
+    return magnitude[:, None] * e
+
+
+def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
+    """The paper's cage (P9, P10): springs between neighbouring balls, (n, 3), N.
+
+    Each spring's length is the chord between neighbouring ball centres projected on the
+    bearing plane, its free length the nominal chord 2 r_p sin(pi/Z).
+    """
+    c = np.asarray(ball_centre, dtype=float)
+    planar = c - np.outer(c @ axis, axis)
+    chord = np.roll(planar, -1, axis=0) - planar  # ball i -> ball i+1
+    length = np.linalg.norm(chord, axis=1)
+    free = 2.0 * pitch_radius * np.sin(np.pi / len(c))
+    f = (stiffness * (length - free) / length)[:, None] * chord  # pulls ball i towards i+1 when stretched
+    return f - np.roll(f, 1, axis=0)
+
+
+def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius):
+    """Sphere drag against each ball's orbital motion through still oil (MODEL.md §8), (n, 3), N:
+    F_D = 1/2 C_D rho pi r² v², v the circumferential ball-centre speed about ``axis``."""
+    rel = np.asarray(ball_centre, dtype=float) - origin
+    e_psi = cross(axis, rel)
+    e_psi /= np.linalg.norm(e_psi, axis=1, keepdims=True)
+    v = np.einsum("ij,ij->i", ball_velocity, e_psi)
+    return (-0.5 * drag_coefficient * density * np.pi * ball_radius ** 2 * np.abs(v) * v)[:, None] * e_psi

@@ -1,0 +1,294 @@
+"""Add a complete angular-contact ball bearing to an Exudyn ``mbs`` (MODEL.md §1–§9).
+
+Example::
+
+    import exudyn as exu
+    from exudyn_bearing import CreateAngularContactBearing, races
+
+    SC = exu.SystemContainer(); mbs = SC.AddSystem()
+    brg = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800), axialForce=1300)
+    mbs.Assemble()
+    ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.simulate
+    res = brg.Results(mbs)
+    res.cage_slip_percent, res.kinematic_cage_slip_percent
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from contact.ballrace import ContactLaw
+from contact.kinematics import rolling_cage_speed
+from contact.lubricant import Lubricant
+from .bearing import BallDrag, Bearing
+from .connector import BearingConnector, CageModel
+from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .quasistatic import solve_load_distribution
+from .races import Driven, Fixed, Race
+
+__all__ = ["CreateAngularContactBearing", "BearingHandle"]
+
+
+@dataclass
+class BearingHandle:
+    """Item indices, sensors and result accessors of a bearing added to an ``mbs``."""
+
+    bearing: Bearing
+    ballBodies: list
+    ballNodes: list
+    cageBody: int | None
+    cageNode: int | None
+    innerRaceBody: int | None
+    innerRaceNode: int | None
+    outerRaceBody: int | None
+    outerRaceNode: int | None
+    contactObject: int
+    stateSensor: int | None
+    connector: BearingConnector = field(repr=False)
+    nodeNumbers: list = field(repr=False, default_factory=list)
+    initialLoads: object = field(repr=False, default=None)
+
+    def States(self, mbs):
+        """Recorded (t, q, q_t) of the bearing's nodes: absolute coordinates, shape
+        (steps, 6 * nodes) each, from the state sensor."""
+        if self.stateSensor is None:
+            raise ValueError("recordStates=False: this bearing records no states")
+        data = np.asarray(mbs.GetSensorStoredData(self.stateSensor))
+        if data.ndim != 2 or data.shape[0] == 0:
+            raise ValueError("no states recorded yet: run a simulation with sensors stored internally")
+        n = 6 * len(self.nodeNumbers)
+        return data[:, 0], data[:, 1:1 + n], data[:, 1 + n:1 + 2 * n]
+
+    def Results(self, mbs, stride: int = 1):
+        """Bearing outputs per recorded step (:class:`exudyn_bearing.outputs.BearingResults`)."""
+        from .outputs import compute_results
+
+        t, q, q_t = self.States(mbs)
+        return compute_results(self, t[::stride], q[::stride], q_t[::stride])
+
+
+def _ring_inertia(mass, r_in, r_out, width):
+    i_axial = 0.5 * mass * (r_in ** 2 + r_out ** 2)
+    i_radial = 0.25 * mass * (r_in ** 2 + r_out ** 2) + mass * width ** 2 / 12
+    return i_radial, i_axial
+
+
+def _default_race_body(bearing: Bearing, race: Race, which: str):
+    """Mass and inertia of a steel ring one ball diameter wide and 0.6 D thick, next to the
+    groove, unless the Race gives them."""
+    d = bearing.ball_diameter
+    if which == "inner":
+        r_out = bearing.pitch_radius - 0.3 * d
+        r_in = r_out - 0.6 * d
+    else:
+        r_in = bearing.pitch_radius + 0.3 * d
+        r_out = r_in + 0.6 * d
+    width = 1.5 * d
+    mass = race.mass or bearing.race_material.density * math.pi * (r_out ** 2 - r_in ** 2) * width
+    inertia = race.inertia or _ring_inertia(mass, r_in, r_out, width)
+    return mass, inertia
+
+
+def _check_frame(position, rotation):
+    position = np.asarray(position, dtype=float)
+    rotation = np.asarray(rotation, dtype=float)
+    if position.shape != (3,) or not np.all(np.isfinite(position)):
+        raise ValueError(f"position must be 3 finite numbers, got {position!r}")
+    if rotation.shape != (3, 3) or not np.allclose(rotation @ rotation.T, np.eye(3), atol=1e-9) \
+            or np.linalg.det(rotation) < 0:
+        raise ValueError("rotationMatrix must be a proper 3x3 rotation matrix")
+    return position, rotation
+
+
+def _check_force(name, value):
+    if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+        raise ValueError(f"{name} must be a finite non-negative force in N, got {value!r}")
+    return float(value)
+
+
+def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT,
+                                *, innerRace: Race | None = None, outerRace: Race | None = None,
+                                axialForce: float = 0.0, radialForce: float = 0.0,
+                                position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
+                                contactLaw: ContactLaw = ContactLaw(), cage: CageModel = CageModel(),
+                                ballDrag: BallDrag | None = REFERENCE_DRAG, recordStates: bool = True,
+                                show: bool = True) -> BearingHandle:
+    """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
+    connector) to ``mbs`` and return its :class:`BearingHandle`.
+
+    Parameters
+    ----------
+    mbs : exudyn.MainSystem
+    bearing : Bearing
+        Geometry and materials (default: the paper's reference bearing).
+    lubricant : contact.lubricant.Lubricant
+    innerRace, outerRace : Race
+        See :mod:`exudyn_bearing.races`; defaults ``Driven(1800 rpm)`` and ``Fixed()``.
+    axialForce, radialForce : float
+        Constant forces on the inner race (a ``Driven``/``Free`` race body), N: axial
+        along +bearing axis (loading the inner contacts), radial along the bearing frame's
+        first axis.
+    position, rotationMatrix
+        Bearing frame in global coordinates; its third column is the bearing axis.
+    contactLaw : contact.ballrace.ContactLaw
+        Normal, traction and spin-moment physics of the ball–race contacts.
+    cage : CageModel
+    ballDrag : BallDrag or None
+        Sphere drag on the balls' orbital motion (MODEL.md §8); None: off.
+    recordStates : bool
+        Add a sensor storing the bearing's node states at every sensor write period, from
+        which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
+        while integrating beyond storing one vector).
+    show : bool
+        Add simple graphics (balls).
+
+    Notes
+    -----
+    The initial state comes from the quasi-static solution (:func:`solve_load_distribution`
+    with the applied forces and speeds, or with the races where they are) with
+    pure-rolling velocities: each ball's spin axis by outer-race control and the orbital
+    and spin speeds with zero rolling slip at both contacts (MODEL.md §7).
+    """
+    import exudyn as exu
+    import exudyn.graphics as graphics
+    from exudyn.utilities import InertiaSphere, NodeRigidBodyRotVecLG, ObjectGenericODE2, RigidBodyInertia, \
+        SensorUserFunction
+
+    if not isinstance(bearing, Bearing):
+        raise ValueError(f"bearing must be a Bearing, got {type(bearing).__name__}")
+    if not isinstance(lubricant, Lubricant):
+        raise ValueError(f"lubricant must be a Lubricant, got {type(lubricant).__name__}")
+    inner = innerRace if innerRace is not None else Driven(1800.0)
+    outer = outerRace if outerRace is not None else Fixed()
+    for name, race in (("innerRace", inner), ("outerRace", outer)):
+        if not isinstance(race, Race):
+            raise ValueError(f"{name} must be a races.Race, got {race!r}")
+    axial, radial = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
+    if (axial or radial) and inner.kind not in ("driven", "free") or (axial or radial) and inner.fixed_translation:
+        raise ValueError("axialForce/radialForce act on a Driven or Free inner race with free translation; "
+                         "with other mounts load the body the race sits on")
+    origin, frame = _check_frame(position, rotationMatrix)
+    axis = frame[:, 2]
+
+    # -- initial configuration from the quasi-static solution ----------------------------
+    w_i, w_o = inner.speed(0.0), outer.speed(0.0)
+    rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
+    relative = np.zeros(5)
+    for race, sign in ((inner, 1.0), (outer, -1.0)):
+        if race.kind == "body":
+            node = mbs.GetObject(race.body)["nodeNumber"]
+            ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
+            init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
+            pos_node = ref[:3] + init[:3]
+            race_origin = pos_node + _rotvec_matrix(ref[3:] + init[3:]) @ np.asarray(race.local_position)
+            relative[:3] += sign * frame.T @ (race_origin - origin)
+    if inner.kind in ("driven", "free") and (axial or radial):
+        loads = solve_load_distribution(bearing, axial=axial, radial=radial, rpm=max(rpm_i, 0.0), outer_rpm=rpm_o,
+                                        hertz_method=contactLaw.hertz_method)
+        relative[:3] = loads.displacement
+    else:
+        loads = solve_load_distribution(bearing, rpm=abs(rpm_i), outer_rpm=rpm_o, displacement=relative,
+                                        hertz_method=contactLaw.hertz_method)
+    z = bearing.balls
+    psi = loads.azimuth
+    e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)
+    e_z = np.array([0.0, 0.0, 1.0])
+    r_c = bearing.pitch_radius + loads.ball_radius_offset
+    c_loc = r_c[:, None] * e_r + loads.ball_axial_offset[:, None] * e_z
+    a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
+    p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
+    p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
+    gamma = bearing.ball_diameter / bearing.pitch_diameter
+    beta = np.arctan2(np.sin(a_o), np.cos(a_o) + gamma)  # outer-race control (Jones)
+    spin_axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * e_z
+    w_c, spin = rolling_cage_speed(c_loc, spin_axis, p_in, p_out, w_i, w_o, return_spin=True)
+
+    # -- bodies -----------------------------------------------------------------------
+    node_type = exu.NodeType.RotationRotationVector
+    ball_bodies, ball_nodes = [], []
+    ball_graphics = [graphics.Sphere(radius=bearing.ball_radius, color=graphics.color.grey, nTiles=16),
+                     graphics.Basis(length=1.3 * bearing.ball_radius)] if show else []
+    for j in range(z):
+        c = origin + frame @ c_loc[j]
+        v = frame @ (w_c[j] * np.cross(e_z, c_loc[j]))
+        d = mbs.CreateRigidBody(inertia=InertiaSphere(mass=bearing.ball_mass, radius=bearing.ball_radius),
+                                referencePosition=c, initialVelocity=v,
+                                initialAngularVelocity=frame @ (spin[j] * spin_axis[j]),
+                                nodeType=node_type, graphicsDataList=ball_graphics, returnDict=True)
+        ball_bodies.append(d["bodyNumber"])
+        ball_nodes.append(d["nodeNumber"])
+    nodes = list(ball_nodes)
+    layout = {"balls": list(range(z)), "cage": None, "inner": None, "outer": None}
+    cage_body = cage_node = None
+    if cage.kind == "rigid":
+        width, thick = bearing.ball_diameter, 0.3 * bearing.ball_diameter
+        mass = cage.mass or 8500.0 * 2 * math.pi * bearing.pitch_radius * thick * width * 0.5
+        i_r, i_a = _ring_inertia(mass, bearing.pitch_radius - thick / 2, bearing.pitch_radius + thick / 2, width)
+        d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
+                                referencePosition=origin, referenceRotationMatrix=frame,
+                                initialAngularVelocity=float(np.mean(w_c)) * axis, nodeType=node_type,
+                                returnDict=True)
+        cage_body, cage_node = d["bodyNumber"], d["nodeNumber"]
+        layout["cage"] = len(nodes)
+        nodes.append(cage_node)
+    race_items = {"inner": (None, None), "outer": (None, None)}
+    race_frames, held = {}, {}
+    for name, race, shift in (("inner", inner, relative[:3]), ("outer", outer, np.zeros(3))):
+        if race.kind == "fixed":
+            continue
+        if race.kind == "body":
+            body = race.body
+            node = mbs.GetObject(body)["nodeNumber"]
+            race_frames[name] = (np.asarray(race.local_position, dtype=float), np.asarray(race.local_rotation, dtype=float))
+        else:
+            mass, (i_r, i_a) = _default_race_body(bearing, race, name)
+            d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
+                                    referencePosition=origin + frame @ shift, referenceRotationMatrix=frame,
+                                    initialAngularVelocity=race.speed(0.0) * axis, nodeType=node_type,
+                                    returnDict=True)
+            body, node = d["bodyNumber"], d["nodeNumber"]
+            race_frames[name] = (np.zeros(3), np.eye(3))
+            if race.kind == "driven":
+                held[len(nodes)] = "all" if race.fixed_translation else "rotation"
+        race_items[name] = (body, node)
+        layout[name] = len(nodes)
+        nodes.append(node)
+    for node in nodes:
+        if mbs.GetNode(node)["nodeType"] != "RigidBodyRotVecLG":
+            raise ValueError(f"node {node} must be a NodeRigidBodyRotVecLG (create the body with "
+                             "nodeType=exu.NodeType.RotationRotationVector)")
+    connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
+                                 layout, origin, frame, race_frames, frame @ np.array([radial, 0.0, axial]), held)
+    connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
+                                          for n in nodes])
+    ref = connector.reference
+
+    def force_user_function(mbs_, t, itemNumber, q, q_t):
+        return connector.evaluate(t, np.asarray(q) + ref, q_t)
+
+    contact = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, forceUserFunction=force_user_function))
+    sensor = None
+    if recordStates:
+        indices = []
+
+        def record(mbs_, t, sensorNumbers, factors, configuration):
+            if not indices:
+                for node in nodes:
+                    start = mbs_.GetNodeODE2Index(node)
+                    indices.extend(range(start, start + 6))
+            q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)
+            q_t = mbs_.systemData.GetODE2Coordinates_t(configuration=configuration)
+            return np.concatenate([np.asarray(q)[indices] + ref, np.asarray(q_t)[indices]]).tolist()
+
+        sensor = mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
+    return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
+                         race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
+                         connector, nodes, loads)
+
+
+def _rotvec_matrix(nu):
+    from contact.kinematics import rotation_matrices
+
+    return rotation_matrices(np.asarray(nu, dtype=float)[None])[0]

@@ -1,0 +1,289 @@
+"""The bearing's contact connector: Exudyn node states -> contact/ physics -> generalized
+forces of one ``ObjectGenericODE2`` (MODEL.md §2–§8).
+
+Node coordinates (``NodeRigidBodyRotVecLG``): position and rotation vector; velocity
+coordinates are the global velocity and the LOCAL angular velocity. A global force F
+enters as F, a global torque tau as A^T tau (A = node rotation matrix).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from contact import cage as cage_physics
+from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces
+from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
+from contact.lubricant import Lubricant
+from .bearing import BallDrag, Bearing
+from .races import Race
+
+__all__ = ["CageModel", "BearingConnector", "ConnectorState"]
+
+
+@dataclass(frozen=True)
+class CageModel:
+    """Ball–cage interaction (MODEL.md §1).
+
+    Parameters
+    ----------
+    kind : {'rigid', 'spring-chain', 'none'}
+        A rigid cage body with Z pockets, the paper's springs between neighbouring balls
+        (P9, P10), or no cage at all.
+    stiffness : float
+        Pocket (or chain spring) stiffness, N/m (paper: 1e8).
+    damping : float or None
+        N s/m; None: 5 % of critical for a ball on the pocket stiffness.
+    clearance : float
+        Circumferential pocket play, m (rigid cage).
+    mass : float or None
+        Cage mass, kg; None: a brass ring of width D and thickness 0.3 D, half of it
+        pockets.
+    """
+
+    kind: str = "rigid"
+    stiffness: float = 1e8
+    damping: float | None = None
+    clearance: float = 0.0
+    mass: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("rigid", "spring-chain", "none"):
+            raise ValueError(f"kind must be 'rigid', 'spring-chain' or 'none', got {self.kind!r}")
+        for name in ("stiffness", "clearance"):
+            value = getattr(self, name)
+            if not (np.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
+        if self.damping is not None and not (np.isfinite(self.damping) and self.damping >= 0):
+            raise ValueError(f"damping must be finite and >= 0, got {self.damping!r}")
+        if self.mass is not None and not (np.isfinite(self.mass) and self.mass > 0):
+            raise ValueError(f"mass must be positive, got {self.mass!r}")
+
+    def damping_for(self, ball_mass: float) -> float:
+        return 2 * 0.05 * np.sqrt(self.stiffness * ball_mass) if self.damping is None else self.damping
+
+
+@dataclass
+class ConnectorState:
+    """Everything one evaluation computed (for outputs and tests), global frame."""
+
+    t: float
+    ball_position: np.ndarray
+    ball_velocity: np.ndarray
+    ball_omega: np.ndarray
+    inner: ContactKinematics
+    outer: ContactKinematics
+    inner_forces: ContactForces
+    outer_forces: ContactForces
+    cage_force: np.ndarray  #: on each ball, (Z, 3)
+    drag_force: np.ndarray  #: on each ball, (Z, 3)
+    cage_omega: np.ndarray | None
+    inner_omega: np.ndarray
+    outer_omega: np.ndarray
+    frame_rotation: np.ndarray  #: bearing (outer race) frame -> global
+    frame_origin: np.ndarray
+    generalized: np.ndarray = field(repr=False, default=None)
+
+
+class BearingConnector:
+    """Computes the generalized forces of all ball–race, ball–cage and drag interactions.
+
+    Parameters
+    ----------
+    bearing, lubricant, law, cage, drag
+        Physics (see :class:`contact.ballrace.ContactLaw`, :class:`CageModel`,
+        :class:`exudyn_bearing.bearing.BallDrag`; ``drag=None``: no drag).
+    races : dict
+        ``{'inner': Race, 'outer': Race}``.
+    layout : dict
+        Node slots in the GenericODE2: ``balls`` (list of slot indices), ``cage``,
+        ``inner``, ``outer`` (slot or None).
+    frame_origin, frame_rotation : ndarray
+        The bearing frame (its third axis is the bearing axis) in global coordinates.
+    race_frames : dict
+        Per race with a node: (local position, local rotation) of the race frame in the
+        node's body frame.
+    applied_force : ndarray, (3,)
+        Global force on the inner race node (e.g. the axial and radial load), N.
+    held : dict
+        Per race slot: which generalized-force components to drop so the race keeps its
+        initial velocity ('rotation' or 'all').
+    """
+
+    def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
+                 drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
+                 race_frames: dict, applied_force, held: dict):
+        self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
+        self.races, self.layout = races, layout
+        self.origin = np.asarray(frame_origin, dtype=float)
+        self.rotation = np.asarray(frame_rotation, dtype=float)
+        self.axis = self.rotation[:, 2]
+        self.race_frames = race_frames
+        self.applied_force = np.asarray(applied_force, dtype=float)
+        self.held = held
+        self.z = bearing.balls
+        self.n_nodes = 1 + max(s for s in [*layout["balls"], layout["cage"], layout["inner"], layout["outer"]]
+                               if s is not None)
+        (ri, zi), (ro, zo) = bearing.groove_centres()
+        d = bearing.ball_diameter
+        self.grooves = {"inner": (ri, zi, (bearing.inner_conformity - 0.5) * d),
+                        "outer": (ro, zo, (bearing.outer_conformity - 0.5) * d)}
+        self.params = {race: RaceContact(d, bearing.pitch_diameter,
+                                         bearing.inner_conformity if race == "inner" else bearing.outer_conformity,
+                                         race, bearing.effective_modulus, bearing.ball_mass)
+                       for race in ("inner", "outer")}
+        self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
+        self.cage_damping = cage.damping_for(bearing.ball_mass)
+        self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
+
+    # -- state of a race frame ---------------------------------------------------------
+    def _race_frame(self, name, t, pos, vel, rot, omega):
+        race: Race = self.races[name]
+        slot = self.layout[name]
+        if slot is None:  # kinematic race
+            w = race.speed(t) * self.axis
+            return self.origin, self.rotation, np.zeros(3), w, None
+        r_loc, rot_loc = self.race_frames[name]
+        a = rot[slot]
+        origin = pos[slot] + a @ r_loc
+        w = omega[slot]
+        return origin, a @ rot_loc, vel[slot] + cross(w, origin - pos[slot]), w, slot
+
+    def decode(self, q, q_t):
+        """Positions, rotation matrices, velocities and LOCAL angular velocities per node slot."""
+        qq = np.asarray(q, dtype=float).reshape(self.n_nodes, 6)
+        vv = np.asarray(q_t, dtype=float).reshape(self.n_nodes, 6)
+        return qq[:, :3], rotation_matrices(qq[:, 3:]), vv[:, :3], vv[:, 3:]
+
+    def evaluate(self, t, q, q_t, details=False):
+        """Generalized forces for absolute coordinates q (with reference) and velocities q_t.
+
+        Returns the force vector (6 per node slot) or, with ``details``, the
+        :class:`ConnectorState`.
+        """
+        return self.forces(t, *self.decode(q, q_t), details=details)
+
+    def forces(self, t, pos, rot, vel, omega_local, details=False, split=False):
+        """Generalized forces from decoded node states (see :meth:`decode`).
+
+        With ``split`` returns (per-slot forces with the ball-caused race and cage parts
+        left out, per-ball contributions to the race/cage slots of shape
+        (Z, n_nodes, 6)): the ball rows depend only on their own ball, which the block
+        Jacobian uses.
+        """
+        omega = np.einsum("nij,nj->ni", rot, omega_local)
+        balls = self.layout["balls"]
+        c, v, w = pos[balls], vel[balls], omega[balls]
+        force = np.zeros((self.n_nodes, 3))
+        torque = np.zeros((self.n_nodes, 3))
+        # per-ball reactions on race and cage slots (force, torque about the slot's node)
+        react_f = np.zeros((self.z, self.n_nodes, 3))
+        react_t = np.zeros((self.z, self.n_nodes, 3))
+        kin, frc, race_omega = {}, {}, {}
+        ball_force = np.zeros((self.z, 3))
+        ball_torque = np.zeros((self.z, 3))
+        for name in ("inner", "outer"):
+            o, a, v_o, w_r, slot = self._race_frame(name, t, pos, vel, rot, omega)
+            race_omega[name] = w_r
+            k = ball_race_kinematics(c, v, w, o, a, v_o, w_r, self.grooves[name], self.bearing.ball_radius, name)
+            f = ball_race_forces(k, self.params[name], self.lubricant, self.law)
+            kin[name], frc[name] = k, f
+            ball_force += f.force
+            ball_torque += f.moment
+            if slot is not None:
+                # the race gets -F at p and -M_z n: about its node that is
+                # -[(c - x_node) x F + moment about the ball centre]
+                react_f[:, slot] -= f.force
+                react_t[:, slot] -= cross(c - pos[slot], f.force) + f.moment
+        cage_force = np.zeros((self.z, 3))
+        cage_omega = None
+        if self.cage.kind == "rigid":
+            s = self.layout["cage"]
+            cage_omega = omega[s]
+            cage_force = cage_physics.pocket_forces(c, v, pos[s], rot[s], vel[s], omega[s], self.pocket_angles,
+                                                    self.bearing.pitch_radius, self.cage.clearance,
+                                                    self.cage.stiffness, self.cage_damping)
+            react_f[:, s] -= cage_force
+            react_t[:, s] -= cross(c - pos[s], cage_force)
+        elif self.cage.kind == "spring-chain":
+            cage_force = cage_physics.spring_chain_forces(c, self.axis, self.bearing.pitch_radius, self.cage.stiffness)
+        drag_force = np.zeros((self.z, 3))
+        if self.drag is not None and self.drag.drag_coefficient * self.drag.oil_volume_fraction > 0:
+            drag_force = cage_physics.drag_forces(c, v, self.axis, self.origin, self.drag.drag_coefficient,
+                                                  self.drag.oil_volume_fraction * self.lubricant.density,
+                                                  self.bearing.ball_radius)
+        force[balls] += ball_force + cage_force + drag_force
+        torque[balls] += ball_torque
+        if self.layout["inner"] is not None:
+            force[self.layout["inner"]] += self.applied_force
+        out = np.empty((self.n_nodes, 6))
+        out[:, :3] = force
+        out[:, 3:] = np.einsum("nji,nj->ni", rot, torque)  # A^T tau: local-omega coordinates
+        react = np.empty((self.z, self.n_nodes, 6))
+        react[..., :3] = react_f
+        react[..., 3:] = np.einsum("nji,znj->zni", rot, react_t)
+        for slot, what in self.held.items():
+            out[slot, 3:] = 0.0
+            react[:, slot, 3:] = 0.0
+            if what == "all":
+                out[slot, :3] = 0.0
+                react[:, slot, :3] = 0.0
+        if split:
+            return out, react
+        out += react.sum(axis=0)
+        if not details:
+            return out.ravel()
+        return ConnectorState(t, c, v, w, kin["inner"], kin["outer"], frc["inner"], frc["outer"], cage_force,
+                              drag_force, cage_omega, race_omega["inner"], race_omega["outer"], self.rotation,
+                              self.origin, out.ravel())
+
+    def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=1e-6):
+        """Block finite-difference Jacobian for Exudyn's ``jacobianUserFunction``:
+        -(f_q dF/dq + f_qt dF/dq_t), dense (6 n_nodes)².
+
+        Each ball's forces depend only on its own state (and the races and cage), so one
+        perturbation of the same coordinate of all balls at once gives every ball's
+        block; race and cage columns are perturbed one at a time. Rotation columns are
+        derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
+        which is what Exudyn's Lie-group nodes expect. Forward differences.
+        """
+        pos, rot, vel, wl = self.decode(q, q_t)
+        base, base_react = self.forces(t, pos, rot, vel, wl, split=True)
+        n6 = 6 * self.n_nodes
+        dq = np.zeros((n6, n6))
+        dv = np.zeros((n6, n6))
+        balls = np.asarray(self.layout["balls"])
+        coupled = self.cage.kind == "spring-chain"
+        others = [s for s in range(self.n_nodes) if s not in set(balls.tolist())]
+        groups = [balls] if not coupled else [np.array([b]) for b in balls]
+        groups += [np.array([s]) for s in others]
+        for group in groups:
+            is_balls = len(group) > 1 or group[0] in set(balls.tolist())
+            for k in range(6):
+                for which, eps in (("q", eps_rotation if k >= 3 else eps_position), ("v", eps_velocity)):
+                    p2, r2, v2, w2 = pos.copy(), rot.copy(), vel.copy(), wl.copy()
+                    if which == "q" and k < 3:
+                        p2[group, k] += eps
+                    elif which == "q":
+                        inc = np.zeros(3)
+                        inc[k - 3] = eps
+                        r2[group] = r2[group] @ rotation_matrices(inc[None])[0]
+                    elif k < 3:
+                        v2[group, k] += eps
+                    else:
+                        w2[group, k - 3] += eps
+                    out, react = self.forces(t, p2, r2, v2, w2, split=True)
+                    target = dq if which == "q" else dv
+                    if is_balls and not coupled:
+                        # ball rows: own block only; race/cage rows: that ball's contribution
+                        d_own = (out - base) / eps
+                        d_react = (react - base_react) / eps
+                        for b in group:
+                            col = 6 * b + k
+                            target[6 * b:6 * b + 6, col] = d_own[b]
+                            for s in others:
+                                target[6 * s:6 * s + 6, col] = d_react[b, s]
+                    else:
+                        col = 6 * group[0] + k
+                        target[:, col] = ((out + react.sum(axis=0)) - (base + base_react.sum(axis=0))).ravel() / eps
+        return -(f_q * dq + f_qt * dv)

@@ -1,0 +1,132 @@
+"""Bearing outputs from recorded node states (MODEL.md §7).
+
+Everything is recomputed after the run from the stored states with the same connector
+the solver used, so a scene pays for outputs only when it asks for them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact.kinematics import cross, rolling_cage_speed
+
+__all__ = ["BearingResults", "compute_results", "cage_slip", "settled"]
+
+
+def cage_slip(reference_speed, cage_speed):
+    """Cage slip (P19), %: (w_ref - w_c) / ((w_c + w_ref)/2) * 100."""
+    return 100.0 * (reference_speed - cage_speed) / (0.5 * (cage_speed + reference_speed))
+
+
+def settled(time, values, tolerance, window=1 / 6):
+    """True when the mean of ``values`` over the last ``window`` of the run differs from
+    the mean over the window before it by less than ``tolerance`` (same units)."""
+    time = np.asarray(time)
+    span = time[-1] - time[0]
+    last = time >= time[-1] - window * span
+    previous = (time >= time[-1] - 2 * window * span) & ~last
+    if last.sum() < 2 or previous.sum() < 2:
+        return False
+    return bool(abs(np.mean(values[last]) - np.mean(values[previous])) < tolerance)
+
+
+@dataclass
+class BearingResults:
+    """Outputs per recorded step (first axis: time; then ball index). SI units, angles in rad.
+
+    Speeds are about the bearing axis; the orbiting frame of a ball has x circumferential,
+    y radial, z axial (paper P8/P18).
+    """
+
+    time: np.ndarray
+    inner_speed: np.ndarray  #: rad/s
+    outer_speed: np.ndarray  #: rad/s
+    cage_speed: np.ndarray  #: rad/s (rigid cage body; else mean ball orbital speed)
+    cage_speed_nominal: np.ndarray  #: w_c^th of P19 (nominal angle), rad/s
+    cage_slip_percent: np.ndarray  #: P19, %
+    kinematic_cage_speed: np.ndarray  #: per ball, (T, Z), rad/s (MODEL.md §7)
+    kinematic_cage_slip_percent: np.ndarray  #: mean over balls, %
+    ball_position_angle: np.ndarray  #: (T, Z)
+    ball_orbital_speed: np.ndarray  #: (T, Z), rad/s
+    ball_omega_orbiting: np.ndarray  #: absolute ball angular velocity in the orbiting frame, (T, Z, 3)
+    attitude_yz: np.ndarray  #: beta_YZ = asin(|w_x|/|w|), (T, Z)
+    attitude_xz: np.ndarray  #: beta_XZ = asin(|w_y|/|w|), (T, Z)
+    inner: dict  #: per-contact arrays (T, Z): load, contact_angle, slip_rolling, slip_transverse, slip, spin, film, traction_rolling, traction_transverse, spin_moment, heat, max_pressure
+    outer: dict
+
+    def last(self, fraction=1 / 3):
+        """Boolean mask of the last ``fraction`` of the run."""
+        return self.time >= self.time[-1] - fraction * (self.time[-1] - self.time[0])
+
+    def summary(self, fraction=1 / 3, settle_tolerance_percent=0.1) -> dict:
+        """Means over the last ``fraction`` of the run; ``settled`` compares the last sixth
+        of the kinematic cage slip with the sixth before (tolerance in percentage points)."""
+        m = self.last(fraction)
+        return {
+            "cage_slip_percent": float(np.mean(self.cage_slip_percent[m])),
+            "kinematic_cage_slip_percent": float(np.mean(self.kinematic_cage_slip_percent[m])),
+            "cage_speed": float(np.mean(self.cage_speed[m])),
+            "cage_speed_nominal": float(np.mean(self.cage_speed_nominal[m])),
+            "attitude_yz_deg": float(np.degrees(np.mean(self.attitude_yz[m]))),
+            "attitude_xz_deg": float(np.degrees(np.mean(self.attitude_xz[m]))),
+            "max_inner_load": float(np.max(self.inner["load"][m])),
+            "max_outer_load": float(np.max(self.outer["load"][m])),
+            "max_inner_slip": float(np.max(self.inner["slip"][m])),
+            "settled": settled(self.time, self.kinematic_cage_slip_percent, settle_tolerance_percent),
+        }
+
+
+_CONTACT_FIELDS = ("load", "contact_angle", "slip_rolling", "slip_transverse", "slip", "spin", "film",
+                   "traction_rolling", "traction_transverse", "spin_moment", "heat", "max_pressure")
+
+
+def compute_results(handle, time, q, q_t) -> BearingResults:
+    """Evaluate the connector on each recorded state and derive the outputs."""
+    con = handle.connector
+    bearing = con.bearing
+    steps, z = len(time), bearing.balls
+    frame, origin, axis = con.rotation, con.origin, con.axis
+    arrays = {name: np.zeros(steps) for name in ("inner_speed", "outer_speed", "cage_speed")}
+    per_ball = {name: np.zeros((steps, z)) for name in ("psi", "orbit", "kin", "byz", "bxz")}
+    w_orb = np.zeros((steps, z, 3))
+    contacts = {race: {f: np.zeros((steps, z)) for f in _CONTACT_FIELDS} for race in ("inner", "outer")}
+    for k in range(steps):
+        s = con.evaluate(time[k], q[k], q_t[k], details=True)
+        rel = (s.ball_position - origin) @ frame  # bearing frame
+        vel = s.ball_velocity @ frame
+        omega = s.ball_omega @ frame
+        radius = np.hypot(rel[:, 0], rel[:, 1])
+        e_r = np.stack([rel[:, 0] / radius, rel[:, 1] / radius, np.zeros(z)], axis=1)
+        e_psi = np.stack([-e_r[:, 1], e_r[:, 0], np.zeros(z)], axis=1)
+        per_ball["psi"][k] = np.arctan2(rel[:, 1], rel[:, 0])
+        per_ball["orbit"][k] = np.einsum("ij,ij->i", vel, e_psi) / radius
+        wx, wy, wz = (np.einsum("ij,ij->i", omega, e) for e in (e_psi, e_r, np.broadcast_to([0.0, 0, 1], (z, 3))))
+        w_orb[k] = np.stack([wx, wy, wz], axis=1)
+        norm = np.maximum(np.linalg.norm(omega, axis=1), 1e-300)
+        per_ball["byz"][k] = np.arcsin(np.minimum(np.abs(wx) / norm, 1.0))
+        per_ball["bxz"][k] = np.arcsin(np.minimum(np.abs(wy) / norm, 1.0))
+        w_i, w_o = float(s.inner_omega @ axis), float(s.outer_omega @ axis)
+        arrays["inner_speed"][k], arrays["outer_speed"][k] = w_i, w_o
+        arrays["cage_speed"][k] = float(s.cage_omega @ axis) if s.cage_omega is not None else np.mean(per_ball["orbit"][k])
+        # race surface speed along the rolling direction at each contact centre
+        surface = []
+        for kin in (s.inner, s.outer):
+            v_ball_p = s.ball_velocity + cross(s.ball_omega, kin.point - s.ball_position)
+            surface.append(np.einsum("ij,ij->i", v_ball_p, kin.rolling) + kin.slip_rolling)
+        p_in, p_out = (s.inner.point - origin) @ frame, (s.outer.point - origin) @ frame
+        per_ball["kin"][k] = rolling_cage_speed(rel, omega, p_in, p_out, w_i, w_o, surface_speeds=surface)
+        for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
+            c = contacts[race]
+            c["load"][k], c["contact_angle"][k] = f.normal_load, kin.contact_angle
+            c["slip_rolling"][k], c["slip_transverse"][k] = kin.slip_rolling, kin.slip_transverse
+            c["slip"][k] = np.hypot(kin.slip_rolling, kin.slip_transverse)
+            c["spin"][k], c["film"][k] = kin.spin, f.film_thickness
+            c["traction_rolling"][k], c["traction_transverse"][k] = f.traction_rolling, f.traction_transverse
+            c["spin_moment"][k], c["heat"][k], c["max_pressure"][k] = f.spin_moment, f.heat, f.max_pressure
+    nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(arrays["inner_speed"], arrays["outer_speed"])])
+    cage = arrays["cage_speed"]
+    kin_slip = np.mean(cage_slip(per_ball["kin"], cage[:, None]), axis=1)
+    return BearingResults(np.asarray(time), arrays["inner_speed"], arrays["outer_speed"], cage, nominal,
+                          cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
+                          w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"])
