@@ -137,7 +137,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         from .traction import crook_traction
 
         idx = np.flatnonzero(loaded)
-        a, b = contact.semi_axes(load[idx])
+        a, b = contact.semi_axes(load)
+        a, b = a[idx], b[idx]
         h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
                                           params.effective_modulus, lubricant)
         h[idx] = np.maximum(h_c, law.min_film_thickness)

@@ -13,9 +13,22 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = [
-    "curvature_radii", "free_contact_angle", "diametral_clearance",
+    "race_sign", "curvature_radii", "free_contact_angle", "diametral_clearance",
     "groove_centres", "GrooveContact", "groove_contact",
 ]
+
+
+def race_sign(race):
+    """+1 for 'outer', -1 for 'inner'; an array of +-1 (one per contact) passes through."""
+    if isinstance(race, str):
+        sign = {"inner": -1.0, "outer": 1.0}.get(race)
+        if sign is None:
+            raise ValueError(f"race must be 'inner' or 'outer', got {race!r}")
+        return sign
+    sign = np.asarray(race, dtype=float)
+    if not np.all(np.abs(sign) == 1.0):
+        raise ValueError("race must be 'inner', 'outer' or an array of -1 (inner) / +1 (outer)")
+    return sign
 
 
 def curvature_radii(ball_diameter, pitch_diameter, contact_angle, conformity, race):
@@ -30,15 +43,15 @@ def curvature_radii(ball_diameter, pitch_diameter, contact_angle, conformity, ra
         D and d_m, m.
     contact_angle : array_like
         rad.
-    conformity : float
+    conformity : float or array_like
         Groove radius / D of this race (> 0.5).
-    race : {'inner', 'outer'}
+    race : {'inner', 'outer'} or array_like of -1/+1
+        See :func:`race_sign`.
     """
     cos_a = np.cos(np.asarray(contact_angle, dtype=float))
-    sign = {"inner": -1.0, "outer": 1.0}.get(race)
-    if sign is None:
-        raise ValueError(f"race must be 'inner' or 'outer', got {race!r}")
+    sign = race_sign(race)
     r_x = ball_diameter * (pitch_diameter + sign * ball_diameter * cos_a) / (2.0 * pitch_diameter)
+    conformity = np.asarray(conformity, dtype=float)
     r_y = conformity * ball_diameter / (2.0 * conformity - 1.0) * np.ones_like(r_x)
     return r_x, r_y
 
@@ -95,11 +108,11 @@ def groove_contact(ball_centre, centre_radius, centre_z, tube_clearance, race):
     ----------
     ball_centre : array_like, shape (n, 3)
         Ball centres in the race frame (race axis = z), m.
-    centre_radius, centre_z : float
+    centre_radius, centre_z : float or array_like (n,)
         Groove-centre circle, m (:func:`groove_centres`).
-    tube_clearance : float
+    tube_clearance : float or array_like (n,)
         (f - 1/2) D, m: groove radius minus ball radius.
-    race : {'inner', 'outer'}
+    race : {'inner', 'outer'} or array_like of -1/+1
         Only fixes the sign of the reported contact angle (the inner normal points
         inwards and to -z at the free angle).
     """
@@ -108,11 +121,11 @@ def groove_contact(ball_centre, centre_radius, centre_z, tube_clearance, race):
     radial = np.zeros_like(c)
     radial[:, 0] = c[:, 0] / rho
     radial[:, 1] = c[:, 1] / rho
-    g = centre_radius * radial
+    g = np.asarray(centre_radius, dtype=float)[..., None] * radial
     g[:, 2] = centre_z
     d = c - g
     dist = np.linalg.norm(d, axis=1)
     n = d / dist[:, None]
-    sign = 1.0 if race == "outer" else -1.0
+    sign = race_sign(race)
     angle = np.arctan2(sign * n[:, 2], sign * np.einsum("ij,ij->i", n, radial))
     return GrooveContact(dist - tube_clearance, n, dist, g, radial, angle)

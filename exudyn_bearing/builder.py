@@ -113,8 +113,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                                 axialForce: float = 0.0, radialForce: float = 0.0,
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
                                 contactLaw: ContactLaw = ContactLaw(), cage: CageModel = CageModel(),
-                                ballDrag: BallDrag | None = REFERENCE_DRAG, recordStates: bool = True,
-                                show: bool = True) -> BearingHandle:
+                                ballDrag: BallDrag | None = REFERENCE_DRAG, innerRaceDisplacement=None,
+                                recordStates: bool = True, show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
     connector) to ``mbs`` and return its :class:`BearingHandle`.
 
@@ -137,6 +137,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     cage : CageModel
     ballDrag : BallDrag or None
         Sphere drag on the balls' orbital motion (MODEL.md §8); None: off.
+    innerRaceDisplacement : (dx, dy, dz), optional
+        Start a created (``Driven``/``Free``) inner race displaced by this much from the
+        outer race, m, in the bearing frame, with the balls in quasi-static balance for
+        that position (no applied forces then), e.g. a preload by interference.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
@@ -184,6 +188,13 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             pos_node = ref[:3] + init[:3]
             race_origin = pos_node + _rotvec_matrix(ref[3:] + init[3:]) @ np.asarray(race.local_position)
             relative[:3] += sign * frame.T @ (race_origin - origin)
+    if innerRaceDisplacement is not None:
+        shift = np.asarray(innerRaceDisplacement, dtype=float)
+        if shift.shape != (3,) or not np.all(np.isfinite(shift)):
+            raise ValueError(f"innerRaceDisplacement must be 3 finite numbers in m, got {innerRaceDisplacement!r}")
+        if inner.kind not in ("driven", "free") or axial or radial:
+            raise ValueError("innerRaceDisplacement needs a Driven or Free inner race and no applied forces")
+        relative[:3] = shift
     if inner.kind in ("driven", "free") and (axial or radial):
         loads = solve_load_distribution(bearing, axial=axial, radial=radial, rpm=max(rpm_i, 0.0), outer_rpm=rpm_o,
                                         hertz_method=contactLaw.hertz_method)

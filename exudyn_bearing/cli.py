@@ -8,6 +8,7 @@ import sys
 
 import numpy as np
 
+from contact.ballrace import ContactLaw as ContactLawDefaults
 from .bearingfile import BearingFile, load_bearing
 from .presets import REFERENCE_BEARING
 
@@ -49,6 +50,34 @@ def _loads(args) -> int:
     return 0
 
 
+def _simulate(args) -> int:
+    from contact.ballrace import ContactLaw
+    from .simulate import SolverSettings, simulate
+
+    setup = _setup(args.bearing)
+    settings = SolverSettings(solver=args.solver, step=args.step, output_step=max(args.step, args.output_step))
+    summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
+                       time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
+                       contact_law=ContactLaw(quadrature_order=args.order))
+    data = summary.to_dict()
+    if args.json:
+        json.dump(data, sys.stdout, indent=1)
+        print()
+        return 0
+    print(f"Dynamic run: axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, "
+          f"{args.time:g} s simulated (means over the last third)")
+    print(f"  cage slip (P19, nominal angle)      {data['cage_slip_percent']:8.3f} %")
+    print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %")
+    print(f"  cage speed                          {data['cage_speed']:8.3f} rad/s "
+          f"(nominal {data['cage_speed_nominal']:.3f})")
+    print(f"  settled                             {'yes' if data['settled'] else 'NO (still drifting: run longer)'}")
+    d = data["details"]
+    print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
+    print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
+          f"{data['newton_iterations']} Newton iterations, wall time {data['wall_time_s']:.1f} s")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
                                      description="Skidding analysis of angular-contact ball bearings with Exudyn.")
@@ -64,6 +93,22 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--exact-hertz", action="store_true", help="exact elliptic integrals instead of Brewe–Hamrock")
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
     p.set_defaults(func=_loads)
+
+    from .simulate import SOLVERS
+
+    p = sub.add_parser("simulate", help="dynamic Exudyn run of one bearing (MODEL.md §1–§7)")
+    p.add_argument("--axial", type=float, required=True, help="axial force on the inner race, N")
+    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
+    p.add_argument("--time", type=float, default=0.05, help="simulated time, s")
+    p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
+    p.add_argument("--solver", choices=SOLVERS, default="generalized-alpha")
+    p.add_argument("--step", type=float, default=1e-4, help="time step, s")
+    p.add_argument("--output-step", type=float, default=5e-4, help="output period, s")
+    p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
+    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(func=_simulate)
     return parser
 
 

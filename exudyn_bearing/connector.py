@@ -7,7 +7,7 @@ enters as F, a global torque tau as A^T tau (A = node rotation matrix).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
@@ -85,6 +85,11 @@ class ConnectorState:
     generalized: np.ndarray = field(repr=False, default=None)
 
 
+def _take(record, part):
+    """The same dataclass with every array field sliced to ``part``."""
+    return replace(record, **{f.name: getattr(record, f.name)[part] for f in fields(record)})
+
+
 class BearingConnector:
     """Computes the generalized forces of all ball–race, ball–cage and drag interactions.
 
@@ -128,10 +133,13 @@ class BearingConnector:
         d = bearing.ball_diameter
         self.grooves = {"inner": (ri, zi, (bearing.inner_conformity - 0.5) * d),
                         "outer": (ro, zo, (bearing.outer_conformity - 0.5) * d)}
-        self.params = {race: RaceContact(d, bearing.pitch_diameter,
-                                         bearing.inner_conformity if race == "inner" else bearing.outer_conformity,
-                                         race, bearing.effective_modulus, bearing.ball_mass)
-                       for race in ("inner", "outer")}
+        # inner contacts first, then outer: one vectorized evaluation for all 2 Z contacts
+        z = bearing.balls
+        self.groove_all = tuple(np.repeat([self.grooves["inner"][k], self.grooves["outer"][k]], z) for k in range(3))
+        self.signs = np.repeat([-1.0, 1.0], z)
+        self.params = RaceContact(d, bearing.pitch_diameter,
+                                  np.repeat([bearing.inner_conformity, bearing.outer_conformity], z),
+                                  self.signs, bearing.effective_modulus, bearing.ball_mass)
         self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
         self.cage_damping = cage.damping_for(bearing.ball_mass)
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
@@ -179,22 +187,26 @@ class BearingConnector:
         # per-ball reactions on race and cage slots (force, torque about the slot's node)
         react_f = np.zeros((self.z, self.n_nodes, 3))
         react_t = np.zeros((self.z, self.n_nodes, 3))
-        kin, frc, race_omega = {}, {}, {}
-        ball_force = np.zeros((self.z, 3))
-        ball_torque = np.zeros((self.z, 3))
-        for name in ("inner", "outer"):
-            o, a, v_o, w_r, slot = self._race_frame(name, t, pos, vel, rot, omega)
-            race_omega[name] = w_r
-            k = ball_race_kinematics(c, v, w, o, a, v_o, w_r, self.grooves[name], self.bearing.ball_radius, name)
-            f = ball_race_forces(k, self.params[name], self.lubricant, self.law)
-            kin[name], frc[name] = k, f
-            ball_force += f.force
-            ball_torque += f.moment
+        z = self.z
+        frames = {name: self._race_frame(name, t, pos, vel, rot, omega) for name in ("inner", "outer")}
+        race_omega = {name: fr[3] for name, fr in frames.items()}
+
+        def stacked(i, shape):
+            return np.concatenate([np.broadcast_to(frames[name][i], (z,) + shape) for name in ("inner", "outer")])
+
+        both = np.concatenate([c, c]), np.concatenate([v, v]), np.concatenate([w, w])
+        kin_all = ball_race_kinematics(*both, stacked(0, (3,)), stacked(1, (3, 3)), stacked(2, (3,)),
+                                       stacked(3, (3,)), self.groove_all, self.bearing.ball_radius, self.signs)
+        frc_all = ball_race_forces(kin_all, self.params, self.lubricant, self.law)
+        ball_force = frc_all.force[:z] + frc_all.force[z:]
+        ball_torque = frc_all.moment[:z] + frc_all.moment[z:]
+        for name, part in (("inner", slice(0, z)), ("outer", slice(z, 2 * z))):
+            slot = frames[name][4]
             if slot is not None:
                 # the race gets -F at p and -M_z n: about its node that is
                 # -[(c - x_node) x F + moment about the ball centre]
-                react_f[:, slot] -= f.force
-                react_t[:, slot] -= cross(c - pos[slot], f.force) + f.moment
+                react_f[:, slot] -= frc_all.force[part]
+                react_t[:, slot] -= cross(c - pos[slot], frc_all.force[part]) + frc_all.moment[part]
         cage_force = np.zeros((self.z, 3))
         cage_omega = None
         if self.cage.kind == "rigid":
@@ -233,7 +245,8 @@ class BearingConnector:
         out += react.sum(axis=0)
         if not details:
             return out.ravel()
-        return ConnectorState(t, c, v, w, kin["inner"], kin["outer"], frc["inner"], frc["outer"], cage_force,
+        halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
+        return ConnectorState(t, c, v, w, halves[0], halves[1], halves[2], halves[3], cage_force,
                               drag_force, cage_omega, race_omega["inner"], race_omega["outer"], self.rotation,
                               self.origin, out.ravel())
 

@@ -15,8 +15,13 @@ __all__ = ["BearingResults", "compute_results", "cage_slip", "settled"]
 
 
 def cage_slip(reference_speed, cage_speed):
-    """Cage slip (P19), %: (w_ref - w_c) / ((w_c + w_ref)/2) * 100."""
-    return 100.0 * (reference_speed - cage_speed) / (0.5 * (cage_speed + reference_speed))
+    """Cage slip (P19), %: (w_ref - w_c) / ((w_c + w_ref)/2) * 100; 0 when both speeds are 0
+    (a bearing at rest does not slip)."""
+    reference_speed, cage_speed = np.broadcast_arrays(np.asarray(reference_speed, dtype=float),
+                                                      np.asarray(cage_speed, dtype=float))
+    mean = 0.5 * (cage_speed + reference_speed)
+    safe = np.where(mean == 0, 1.0, mean)
+    return np.where(mean == 0, 0.0, 100.0 * (reference_speed - cage_speed) / safe)
 
 
 def settled(time, values, tolerance, window=1 / 6):

@@ -93,7 +93,6 @@ def _exudyn_settings(settings: SolverSettings, end_time: float):
     ti.stepInformation = 0
     s.solution.file.write = False
     s.solution.sensors.writePeriod = settings.output_step
-    s.displayComputationTime = False
     s.linearSolver.solverType = exu.LinearSolverType.EigenSparse
     if settings.implicit:
         ti.solverType = exu.DynamicSolverType.GeneralizedAlpha
