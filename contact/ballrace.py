@@ -62,6 +62,10 @@ class ContactLaw:
         Apply the traction spin moment M_z (P16).
     quadrature_order : int
         Order of the traction quadrature (:func:`contact.traction.crook_traction`).
+    fast_quadrature : bool
+        The fixed-size fast rule (worst error 4.6e-4 of the force scale at order 16 on
+        reference-bearing states, ~5x cheaper; ``benchmarks/traction_speed.py``) or the
+        accurate adaptive rule.
     damping_ratio : float
         Normal contact damping as a fraction of critical for the ball mass on the
         linearized Hertz stiffness (damps the ~0.2 ms contact oscillations; the EHD film
@@ -77,6 +81,7 @@ class ContactLaw:
     traction: str = "crook"
     spin_moment: bool = True
     quadrature_order: int = 16
+    fast_quadrature: bool = True
     damping_ratio: float = 0.05
     min_film_thickness: float = 1e-8
     limiting_shear: float | None = None
@@ -144,7 +149,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         h[idx] = np.maximum(h_c, law.min_film_thickness)
         # spin still shapes the local slip field when its moment is switched off
         tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_max[idx], h[idx],
-                            lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear)
+                            lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear,
+                            fast=law.fast_quadrature)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz

@@ -114,7 +114,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
                                 contactLaw: ContactLaw = ContactLaw(), cage: CageModel = CageModel(),
                                 ballDrag: BallDrag | None = REFERENCE_DRAG, innerRaceDisplacement=None,
-                                recordStates: bool = True, show: bool = True) -> BearingHandle:
+                                initialControl: str = "auto", recordStates: bool = True,
+                                show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
     connector) to ``mbs`` and return its :class:`BearingHandle`.
 
@@ -141,6 +142,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         Start a created (``Driven``/``Free``) inner race displaced by this much from the
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
         that position (no applied forces then), e.g. a preload by interference.
+    initialControl : {'auto', 'inner', 'outer'}
+        Raceway control (Jones) that sets each ball's initial spin axis: 'auto' takes the
+        contact with the larger Newtonian spin resistance (with ball drag the balls settle
+        there; e.g. the inner race at 1.3 kN for the reference bearing), or force one.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
@@ -211,8 +216,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
     p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
     p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
-    gamma = bearing.ball_diameter / bearing.pitch_diameter
-    beta = np.arctan2(np.sin(a_o), np.cos(a_o) + gamma)  # outer-race control (Jones)
+    if initialControl not in ("auto", "inner", "outer"):
+        raise ValueError(f"initialControl must be 'auto', 'inner' or 'outer', got {initialControl!r}")
+    beta = _control_axis(bearing, lubricant, loads, w_i, w_o, initialControl)
     spin_axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * e_z
     w_c, spin = rolling_cage_speed(c_loc, spin_axis, p_in, p_out, w_i, w_o, return_spin=True)
 
@@ -297,6 +303,41 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
                          connector, nodes, loads)
+
+
+def _spin_resistance(bearing, lubricant, load, angle, race, speed):
+    """Newtonian spin resistance (1/h) of the integral of eta (x² + y²) over the Hertz
+    ellipse, N m s (MODEL.md §5–§6): the spin moment per unit spin at small spin."""
+    from contact import film
+
+    r_x, _ = bearing.curvature_radii(angle, race)
+    con = bearing.hertz(angle, race)
+    a, b = con.semi_axes(load)
+    lam = lubricant.pressure_viscosity * con.max_pressure(load)
+    h = np.maximum(film.central_film_thickness(speed, load, r_x, con.ellipticity, bearing.effective_modulus,
+                                               lubricant), 1e-9)
+    # polar: x = b R cos t, y = a R sin t; integral of R^3 exp(lam sqrt(1 - R²)) dR by Gauss
+    nodes, weights = np.polynomial.legendre.leggauss(24)
+    r = 0.5 * (nodes + 1.0)
+    radial = 0.5 * np.sum(weights * r ** 3 * np.exp(np.multiply.outer(lam, np.sqrt(1.0 - r ** 2))), axis=-1)
+    return lubricant.viscosity * np.pi * a * b * (a ** 2 + b ** 2) * radial / h
+
+
+def _control_axis(bearing, lubricant, loads, w_i, w_o, control="auto"):
+    """Initial spin-axis angle of each ball from the bearing axis (rad): raceway control
+    (Jones) by the contact with the larger Newtonian spin resistance, which under EHD
+    traction is usually the smaller, higher-pressure inner contact."""
+    a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
+    gamma = bearing.ball_diameter / bearing.pitch_diameter
+    outer = np.arctan2(np.sin(a_o), np.cos(a_o) + gamma)
+    inner = np.arctan2(np.sin(a_i), np.cos(a_i) - gamma)
+    if control != "auto":
+        return inner if control == "inner" else outer
+    speed = max(abs(w_i - w_o), 1e-3) * bearing.pitch_radius * (1 - gamma ** 2) / 2  # entrainment, m/s
+    q_i, q_o = np.maximum(loads.inner_load, 1e-9), np.maximum(loads.outer_load, 1e-9)
+    m_i = _spin_resistance(bearing, lubricant, q_i, a_i, "inner", speed)
+    m_o = _spin_resistance(bearing, lubricant, q_o, a_o, "outer", speed)
+    return np.where(m_i > m_o, inner, outer)
 
 
 def _rotvec_matrix(nu):

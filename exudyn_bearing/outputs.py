@@ -65,8 +65,7 @@ class BearingResults:
         return self.time >= self.time[-1] - fraction * (self.time[-1] - self.time[0])
 
     def summary(self, fraction=1 / 3, settle_tolerance_percent=0.1) -> dict:
-        """Means over the last ``fraction`` of the run; ``settled`` compares the last sixth
-        of the kinematic cage slip with the sixth before (tolerance in percentage points)."""
+        """Means over the last ``fraction`` of the run and :meth:`settled`."""
         m = self.last(fraction)
         return {
             "cage_slip_percent": float(np.mean(self.cage_slip_percent[m])),
@@ -78,8 +77,16 @@ class BearingResults:
             "max_inner_load": float(np.max(self.inner["load"][m])),
             "max_outer_load": float(np.max(self.outer["load"][m])),
             "max_inner_slip": float(np.max(self.inner["slip"][m])),
-            "settled": settled(self.time, self.kinematic_cage_slip_percent, settle_tolerance_percent),
+            "settled": self.settled(settle_tolerance_percent),
         }
+
+    def settled(self, tolerance_percent=0.1) -> bool:
+        """Neither the cage speed (in % of itself) nor the kinematic cage slip (in
+        percentage points) drifted by more than ``tolerance_percent`` between the last
+        sixth of the run and the sixth before it."""
+        cage_percent = 100.0 * self.cage_speed / max(abs(float(np.mean(self.cage_speed))), 1e-300)
+        return (settled(self.time, cage_percent, tolerance_percent)
+                and settled(self.time, self.kinematic_cage_slip_percent, tolerance_percent))
 
 
 _CONTACT_FIELDS = ("load", "contact_angle", "slip_rolling", "slip_transverse", "slip", "spin", "film",

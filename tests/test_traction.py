@@ -416,3 +416,183 @@ def test_newtonian_slope_bad_input():
         newtonian_slope(1e-3, 1e-4, 1e9, -1.0, REF)
     with pytest.raises(ValueError, match="^a "):
         newtonian_slope(np.nan, 1e-4, 1e9, 1e-6, REF)
+
+
+# ---------------------------------------------------------------------------------------
+# 9. Fast rule (fast=True) for the dynamic model
+# ---------------------------------------------------------------------------------------
+def _reference_contact(race, load, angle_deg):
+    """(a, b, p_max, h) of a reference-bearing contact (MODEL.md §8: D = 25 mm, d_m = 155 mm,
+    conformity 0.52, steel), Hamrock–Dowson film at 6 m/s entrainment."""
+    from contact import film, hertz
+    from contact.ballrace import RaceContact
+
+    e_mod = hertz.effective_modulus(210e9, 0.3, 210e9, 0.3)
+    r_x, con = RaceContact(0.025, 0.155, 0.52, race, e_mod, 0.064).hertz(math.radians(angle_deg))
+    a, b = con.semi_axes(load)
+    h = film.central_film_thickness(6.0, load, r_x, con.ellipticity, e_mod, REF)
+    return float(a), float(b), float(con.max_pressure(load)), float(h)
+
+
+def _dynamic_states():
+    """Typical states of the dynamic model (reference bearing, 1800 rpm): inner contacts
+    15–900 N with ω_s −200…−350 rad/s, outer 40–920 N with +30…+120 rad/s, slips up to
+    0.5 m/s (rolling) and 0.012 m/s (transverse); spin pole at the centre, inside, near the
+    edge, just outside and far outside, and no spin."""
+    poles = [(0.0, 0.0), (0.02, 0.001), (0.3, 0.1), (-0.6, 0.5), (0.95, 0.0), (0.0, -0.97),
+             (0.7, 0.7), (1.03, 0.0), (0.0, 1.05), (-1.3, 0.2), (0.5, 2.0), (3.0, 0.0)]
+    rows = []
+    for race, loads, spins in (("inner", (15.0, 150.0, 900.0), (-200.0, -350.0)),
+                               ("outer", (40.0, 300.0, 920.0), (30.0, 120.0))):
+        for load in loads:
+            for angle in (38.0, 55.0):
+                a, b, pm, h = _reference_contact(race, load, angle)
+                for w in spins:
+                    for xp, yp in poles:  # pole (x_p/b, y_p/a) = (−u_y/ω, u_x/ω)/(b, a)
+                        ux, uy = w * yp * a, -w * xp * b
+                        if abs(ux) <= 0.5 and abs(uy) <= 0.012:
+                            rows.append((ux, uy, w, a, b, pm, h))
+                for ux, uy in ((1e-5, 0.0), (0.01, 0.002), (0.3, -0.005)):
+                    rows.append((ux, uy, 0.0, a, b, pm, h))
+    return [np.array(c) for c in zip(*rows)]
+
+
+def test_fast_rule_agrees_with_accurate_rule_on_dynamic_states():
+    ux, uy, w, a, b, pm, h = _dynamic_states()
+    assert ux.size > 150
+    ref = crook_traction(ux, uy, w, a, b, pm, h, REF, order=24)
+    t = crook_traction(ux, uy, w, a, b, pm, h, REF, fast=True)  # default order 16
+    sab = np.sqrt(a * b)
+    scale = np.hypot(ref.fx, ref.fy) + np.abs(ref.mz) / sab
+    err = (np.hypot(t.fx - ref.fx, t.fy - ref.fy) + np.abs(t.mz - ref.mz) / sab) / scale
+    assert err.max() < 1e-3, (err.max(), int(np.argmax(err)))
+    np.testing.assert_allclose(t.heat, ref.heat, rtol=1e-3)
+    # the error falls with the order of the fast rule
+    t24 = crook_traction(ux, uy, w, a, b, pm, h, REF, fast=True, order=24)
+    err24 = (np.hypot(t24.fx - ref.fx, t24.fy - ref.fy) + np.abs(t24.mz - ref.mz) / sab) / scale
+    assert err24.max() < 3e-4
+
+
+def test_fast_rule_jacobian():
+    ux, uy, w, a, b, pm, h = _dynamic_states()
+    ref = crook_traction(ux, uy, w, a, b, pm, h, REF, order=24, derivatives=True).jacobian
+    t = crook_traction(ux, uy, w, a, b, pm, h, REF, fast=True, derivatives=True)
+    J = t.jacobian
+    np.testing.assert_array_equal(J, np.swapaxes(J, -1, -2))  # symmetric
+    # in units of force: (u_x, u_y, √(ab) ω_s) → (f_x, f_y, M_z/√(ab))
+    sc = np.stack([np.ones_like(a), np.ones_like(a), np.sqrt(a * b)], -1)
+    Jn = lambda m: m / sc[:, :, None] * sc[:, None, :]  # noqa: E731
+    err = np.abs(Jn(J) - Jn(ref)).max((1, 2)) / np.abs(Jn(ref)).max((1, 2))
+    assert err.max() < 1e-2 and np.median(err) < 1e-5, (err.max(), np.median(err))
+    # the forces do not depend on derivatives=True
+    t0 = crook_traction(ux, uy, w, a, b, pm, h, REF, fast=True)
+    np.testing.assert_array_equal(_forces(t0), _forces(t))
+
+
+def test_fast_rule_jacobian_matches_finite_differences():
+    """Central differences of the accurate rule (order 24) at typical heavy states."""
+    for q, geo in (((0.002, 0.004, -300.0), _reference_contact("inner", 700.0, 45.0)),
+                   ((0.05, -0.008, 60.0), _reference_contact("outer", 700.0, 40.0)),
+                   ((0.02, 0.001, 0.0), _reference_contact("inner", 300.0, 50.0))):
+        q = np.array(q)
+        a, b, pm, h = geo
+        J = crook_traction(*q, a, b, pm, h, REF, fast=True, derivatives=True).jacobian
+        step = np.array([1e-6, 1e-6, 1e-3]) * np.maximum(1.0, np.abs(q))
+        Jfd = np.empty((3, 3))
+        for j in range(3):
+            e = np.zeros(3)
+            e[j] = step[j]
+            fp = _forces(crook_traction(*(q + e), a, b, pm, h, REF, order=24))[:3]
+            fm = _forces(crook_traction(*(q - e), a, b, pm, h, REF, order=24))[:3]
+            Jfd[:, j] = (fp - fm) / (2 * step[j])
+        assert np.all(np.abs(J - Jfd) <= 1e-2 * np.abs(Jfd).max(axis=1, keepdims=True))
+
+
+def test_fast_rule_batch_shapes_and_unloaded_contacts():
+    rng = np.random.default_rng(8)
+    n = 14
+    ux = rng.normal(0, 0.05, n)
+    uy = rng.normal(0, 0.01, n)
+    w = rng.uniform(-300, 300, n)
+    w[:3] = 0.0
+    ux[3], uy[3] = 0.0, 0.0
+    a = rng.uniform(0.8e-3, 2.5e-3, n)
+    b = a / rng.uniform(8, 16, n)
+    pm = rng.uniform(0.3e9, 1.2e9, n)
+    a[4] = 0.0  # unloaded contact
+    h = rng.uniform(0.3e-6, 1e-6, n)
+    batch = crook_traction(ux, uy, w, a, b, pm, h, REF, derivatives=True, fast=True)
+    assert _forces(batch)[:, 4].tolist() == [0.0, 0.0, 0.0, 0.0]
+    for i in range(n):
+        one = crook_traction(ux[i], uy[i], w[i], a[i], b[i], pm[i], h[i], REF, derivatives=True,
+                             fast=True)
+        scale = np.abs(_forces(batch)[:, i]).max() + 1e-300
+        np.testing.assert_allclose(_forces(one), _forces(batch)[:, i], rtol=0, atol=1e-5 * scale)
+        np.testing.assert_allclose(one.jacobian, batch.jacobian[i], rtol=0,
+                                   atol=1e-5 * np.abs(batch.jacobian[i]).max())
+    t = crook_traction(np.linspace(-0.01, 0.01, 12).reshape(3, 4), 0.001,
+                       np.array([0.0, 10.0, -100.0, 200.0]), **HEAVY, h=H, lubricant=REF,
+                       derivatives=True, fast=True)
+    assert t.fx.shape == (3, 4) and t.jacobian.shape == (3, 4, 3, 3)
+    t = crook_traction(0.01, 0.0, 50.0, **HEAVY, h=H, lubricant=REF, fast=True)
+    assert np.shape(t.fx) == () and t.jacobian is None
+    with pytest.raises(ValueError, match="^h "):
+        crook_traction(0.01, 0.0, 50.0, **HEAVY, h=-1.0, lubricant=REF, fast=True)
+
+
+def test_fast_rule_closed_forms():
+    a, b = HEAVY["a"], HEAVY["b"]
+    # uniform viscosity, no spin (see test_uniform_viscosity_closed_form_curve)
+    eta, k, c = 0.04, 0.14, 0.05
+    c1 = math.sqrt(eta * c / (8 * k))
+    for u in [1e-3, 1.0, 1.51 / c1, 100.0, 1e4]:
+        s = c1 * u
+        exact = (math.pi * a * b / H * math.sqrt(8 * k * eta / c)
+                 * math.asinh(s) / math.sqrt(1 + s * s))
+        t = crook_traction(0.6 * u, -0.8 * u, 0.0, a, b, 1e9, H, ISO, fast=True)
+        assert math.hypot(t.fx, t.fy) == pytest.approx(exact, rel=1e-5)
+        assert t.heat == pytest.approx(exact * u, rel=1e-5)
+    # isothermal pure spin: M_z = (η/h) ω π a b (a² + b²)/4
+    for w in [1e-3, -2e-3]:
+        t = crook_traction(0.0, 0.0, w, a, b, 1e9, H, ISO, fast=True)
+        assert t.mz == pytest.approx(0.04 / H * w * math.pi * a * b * (a * a + b * b) / 4,
+                                     rel=1e-5)
+    # Newtonian limit with the pressure–viscosity effect, and exact zero at zero slip
+    slope = newtonian_slope(**HEAVY, h=H, lubricant=REF)
+    t = crook_traction(3e-9, -2e-9, 0.0, **HEAVY, h=H, lubricant=REF, fast=True)
+    assert t.fx == pytest.approx(slope * 3e-9, rel=1e-4)
+    assert t.fy == pytest.approx(slope * -2e-9, rel=1e-4)
+    t = crook_traction([0.0, 0.0], 0.0, [0.0, 1e-300], **HEAVY, h=H, lubricant=REF,
+                       derivatives=True, fast=True)
+    assert np.all(np.abs(_forces(t)) < 1e-250) and np.all(np.isfinite(t.jacobian))
+    np.testing.assert_allclose(t.jacobian[0, [0, 1], [0, 1]], slope, rtol=1e-4)
+
+
+def test_fast_rule_signs_and_limiting_shear():
+    rng = np.random.default_rng(3)
+    ux = rng.choice([-1, 1], 40) * 10 ** rng.uniform(-4, 0, 40)
+    uy = rng.choice([-1, 1], 40) * 10 ** rng.uniform(-4, -1, 40)
+    t = crook_traction(ux, uy, 0.0, **HEAVY, h=H, lubricant=REF, fast=True)
+    assert np.all(np.sign(t.fx) == np.sign(ux)) and np.all(np.sign(t.fy) == np.sign(uy))
+    w = rng.uniform(-300, 300, 40)
+    assert np.all(crook_traction(ux, uy, w, **HEAVY, h=H, lubricant=REF, fast=True).heat > 0)
+    t = crook_traction(0.0, 0.0, w, **HEAVY, h=H, lubricant=REF, fast=True)
+    assert np.all(np.sign(t.mz) == np.sign(w))
+    lam = 0.08
+    load = 2 * math.pi * HEAVY["a"] * HEAVY["b"] * HEAVY["p_max"] / 3
+    u = np.logspace(-4, 1, 11)
+    t = crook_traction(u, 0.0, 50.0, **HEAVY, h=H, lubricant=REF, limiting_shear=lam, fast=True)
+    free = crook_traction(u, 0.0, 50.0, **HEAVY, h=H, lubricant=REF, fast=True)
+    assert np.all(np.hypot(t.fx, t.fy) <= lam * load * (1 + 1e-6))
+    assert np.all(np.hypot(t.fx, t.fy) <= np.hypot(free.fx, free.fy) * (1 + 1e-6))
+    acc = crook_traction(u, 0.0, 50.0, **HEAVY, h=H, lubricant=REF, limiting_shear=lam, order=32)
+    np.testing.assert_allclose(t.fx, acc.fx, rtol=0, atol=1e-2 * np.abs(acc.fx).max())
+
+
+def test_fast_rule_falls_back_beyond_float32_range():
+    """c_ηP p_max > 40 (2.3 GPa for the reference oil) with derivatives: the accurate rule."""
+    args = (0.01, 0.001, 100.0, 1.5e-3, 0.15e-3, 3e9, H, REF)
+    t = crook_traction(*args, fast=True, derivatives=True)
+    ref = crook_traction(*args, derivatives=True)
+    np.testing.assert_array_equal(_forces(t), _forces(ref))
+    np.testing.assert_array_equal(t.jacobian, ref.jacobian)
