@@ -157,13 +157,12 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     -----
     The initial state comes from the quasi-static solution (:func:`solve_load_distribution`
     with the applied forces and speeds, or with the races where they are) with
-    pure-rolling velocities: each ball's spin axis by outer-race control and the orbital
-    and spin speeds with zero rolling slip at both contacts (MODEL.md §7).
+    pure-rolling velocities: each ball's spin axis by raceway control (``initialControl``)
+    and the orbital and spin speeds with zero rolling slip at both contacts (MODEL.md §7).
     """
     import exudyn as exu
     import exudyn.graphics as graphics
-    from exudyn.utilities import InertiaSphere, NodeRigidBodyRotVecLG, ObjectGenericODE2, RigidBodyInertia, \
-        SensorUserFunction
+    from exudyn.utilities import InertiaSphere, ObjectGenericODE2, RigidBodyInertia, SensorUserFunction
 
     if not isinstance(bearing, Bearing):
         raise ValueError(f"bearing must be a Bearing, got {type(bearing).__name__}")
@@ -175,7 +174,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         if not isinstance(race, Race):
             raise ValueError(f"{name} must be a races.Race, got {race!r}")
     axial, radial = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
-    if (axial or radial) and inner.kind not in ("driven", "free") or (axial or radial) and inner.fixed_translation:
+    loaded = bool(axial or radial)
+    if loaded and (inner.kind not in ("driven", "free") or inner.fixed_translation):
         raise ValueError("axialForce/radialForce act on a Driven or Free inner race with free translation; "
                          "with other mounts load the body the race sits on")
     origin, frame = _check_frame(position, rotationMatrix)
@@ -197,16 +197,17 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         shift = np.asarray(innerRaceDisplacement, dtype=float)
         if shift.shape != (3,) or not np.all(np.isfinite(shift)):
             raise ValueError(f"innerRaceDisplacement must be 3 finite numbers in m, got {innerRaceDisplacement!r}")
-        if inner.kind not in ("driven", "free") or axial or radial:
+        if inner.kind not in ("driven", "free") or loaded:
             raise ValueError("innerRaceDisplacement needs a Driven or Free inner race and no applied forces")
         relative[:3] = shift
-    if inner.kind in ("driven", "free") and (axial or radial):
-        loads = solve_load_distribution(bearing, axial=axial, radial=radial, rpm=max(rpm_i, 0.0), outer_rpm=rpm_o,
-                                        hertz_method=contactLaw.hertz_method)
+    # the quasi-static solver takes a non-negative inner speed; only |cage speed| matters
+    sense = -1.0 if rpm_i < 0 else 1.0
+    speeds = dict(rpm=abs(rpm_i), outer_rpm=sense * rpm_o, hertz_method=contactLaw.hertz_method)
+    if loaded:
+        loads = solve_load_distribution(bearing, axial=axial, radial=radial, **speeds)
         relative[:3] = loads.displacement
     else:
-        loads = solve_load_distribution(bearing, rpm=abs(rpm_i), outer_rpm=rpm_o, displacement=relative,
-                                        hertz_method=contactLaw.hertz_method)
+        loads = solve_load_distribution(bearing, displacement=relative, **speeds)
     z = bearing.balls
     psi = loads.azimuth
     e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)

@@ -16,6 +16,7 @@ from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_f
 from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
+from .errors import BearingSimulationError
 from .races import Race
 
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
@@ -180,6 +181,8 @@ class BearingConnector:
         Jacobian uses.
         """
         omega = np.einsum("nij,nj->ni", rot, omega_local)
+        if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel)) and np.all(np.isfinite(omega))):
+            self._non_finite(t, pos, vel, omega)
         balls = self.layout["balls"]
         c, v, w = pos[balls], vel[balls], omega[balls]
         force = np.zeros((self.n_nodes, 3))
@@ -249,6 +252,18 @@ class BearingConnector:
         return ConnectorState(t, c, v, w, halves[0], halves[1], halves[2], halves[3], cage_force,
                               drag_force, cage_omega, race_omega["inner"], race_omega["outer"], self.rotation,
                               self.origin, out.ravel())
+
+    def _non_finite(self, t, pos, vel, omega):
+        names = {s: f"ball {i}" for i, s in enumerate(self.layout["balls"])}
+        names.update({self.layout[k]: f"{k} race" if k != "cage" else "cage" for k in ("cage", "inner", "outer")
+                      if self.layout[k] is not None})
+        for what, arr in (("position", pos), ("velocity", vel), ("angular velocity", omega)):
+            bad = np.flatnonzero(~np.all(np.isfinite(arr), axis=1))
+            if bad.size:
+                raise BearingSimulationError(
+                    f"t = {t:.6g} s: non-finite {what} of {names.get(int(bad[0]), f'node slot {bad[0]}')} "
+                    "(the integration diverged: the contacts are too stiff for this step; use generalized-alpha "
+                    "or a smaller step)")
 
     def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=1e-6):
         """Block finite-difference Jacobian for Exudyn's ``jacobianUserFunction``:

@@ -12,15 +12,12 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from .bearing import BallDrag, Bearing
 from .connector import CageModel
+from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
 SOLVERS = ("generalized-alpha", "trapezoidal", "rk44", "dopri5")
-
-
-class BearingSimulationError(RuntimeError):
-    """A run diverged or left the physically meaningful range; the message says where."""
 
 
 @dataclass(frozen=True)

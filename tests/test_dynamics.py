@@ -228,3 +228,16 @@ def test_kinematic_cage_slip_zero_without_drag(axial):
     # the paper's P19 slip with the nominal angle is NOT zero here (angles differ from 40°):
     # the kinematic measure is what removes that
     assert abs(float(np.mean(res.cage_slip_percent[last]))) > 0.3
+
+
+def test_diverging_run_stops_with_a_message():
+    """RK44 far above its stability limit (EXUDYN_NOTES: NaN at 5e-5 s) must stop with a
+    BearingSimulationError that says what diverged and what to change, never return NaN."""
+    from exudyn_bearing.errors import BearingSimulationError
+
+    _, mbs = _new_system()
+    handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
+                                         axialForce=1300.0, show=False)
+    mbs.Assemble()
+    with pytest.raises(BearingSimulationError, match="generalized-alpha|smaller step"):
+        run_solver(mbs, [handle], 0.02, SolverSettings(solver="rk44", step=4e-4))
