@@ -16,7 +16,7 @@ import exudyn as exu
 
 from exudyn_bearing import REFERENCE_BEARING, races, solve_load_distribution
 from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.simulate import SolverSettings, run_solver
+from exudyn_bearing.runner import SolverSettings, run_solver
 
 
 def main():

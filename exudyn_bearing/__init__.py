@@ -20,6 +20,6 @@ from .builder import BearingHandle, CreateAngularContactBearing
 from .connector import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM
 from .quasistatic import LoadDistribution, QuasiStaticError, solve_load_distribution
-from .simulate import BearingSimulationError, SolverSettings, run_solver, simulate
+from .runner import BearingSimulationError, SolverSettings, run_solver, simulate
 
 __version__ = "0.1.0"

@@ -8,7 +8,7 @@ Example::
     SC = exu.SystemContainer(); mbs = SC.AddSystem()
     brg = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800), axialForce=1300)
     mbs.Assemble()
-    ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.simulate
+    ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.runner
     res = brg.Results(mbs)
     res.cage_slip_percent, res.kinematic_cage_slip_percent
 """

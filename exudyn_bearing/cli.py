@@ -52,7 +52,7 @@ def _loads(args) -> int:
 
 def _simulate(args) -> int:
     from contact.ballrace import ContactLaw
-    from .simulate import SolverSettings, simulate
+    from .runner import SolverSettings, simulate
 
     setup = _setup(args.bearing)
     settings = SolverSettings(solver=args.solver, step=args.step, output_step=max(args.step, args.output_step))
@@ -78,6 +78,28 @@ def _simulate(args) -> int:
     return 0
 
 
+def _skid_map(args) -> int:
+    from . import skidmap
+
+    setup = _setup(args.bearing)
+    client = None
+    if args.scheduler:
+        try:
+            from dask.distributed import Client
+        except ImportError:
+            raise ValueError("--scheduler needs dask[distributed]: pip install -e .[dask]") from None
+        client = Client(args.scheduler)
+    print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
+          f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, {args.time:g} s per point -> {args.out}", flush=True)
+    result = skidmap.skid_map(setup.bearing, setup.lubricant, axial=skidmap.parse_range(args.axial),
+                              radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
+                              time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
+                              progress=lambda line: print(line, flush=True))
+    print(result.markdown())
+    print(f"wrote {args.out}/skid_map.csv, skid_map.md, thresholds.json, skid_map.png")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
                                      description="Skidding analysis of angular-contact ball bearings with Exudyn.")
@@ -94,7 +116,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
     p.set_defaults(func=_loads)
 
-    from .simulate import SOLVERS
+    from .runner import SOLVERS
 
     p = sub.add_parser("simulate", help="dynamic Exudyn run of one bearing (MODEL.md §1–§7)")
     p.add_argument("--axial", type=float, required=True, help="axial force on the inner race, N")
@@ -109,6 +131,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(func=_simulate)
+
+    from . import skidmap
+
+    p = sub.add_parser("skid-map", help="skid-risk map over load and speed (the main job)")
+    p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
+    p.add_argument("--axial", default=",".join(f"{v:g}" for v in skidmap.DEFAULT_AXIAL),
+                   help="axial loads, N: start:stop:count or a,b,c")
+    p.add_argument("--radial", default="0", help="radial loads, N: start:stop:count or a,b,c")
+    p.add_argument("--rpm", default=",".join(f"{v:g}" for v in skidmap.DEFAULT_RPM), help="inner-race speeds, rpm")
+    p.add_argument("--time", type=float, default=skidmap.DEFAULT_TIME, help="simulated time per point, s")
+    p.add_argument("--out", default="out/skid_map", help="output directory (resumes what it finds there)")
+    p.add_argument("--workers", type=int, default=None, help="local worker processes (default: CPU count)")
+    p.add_argument("--scheduler", help="Dask scheduler address (runs the grid on that cluster)")
+    p.set_defaults(func=_skid_map)
     return parser
 
 

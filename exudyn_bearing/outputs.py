@@ -80,10 +80,13 @@ class BearingResults:
             "settled": self.settled(settle_tolerance_percent),
         }
 
-    def settled(self, tolerance_percent=0.1) -> bool:
-        """Neither the cage speed (in % of itself) nor the kinematic cage slip (in
+    def settled(self, tolerance_percent=0.1, minimum_time=0.05) -> bool:
+        """The run lasted at least ``minimum_time`` s (shorter windows hide slow drifts)
+        and neither the cage speed (in % of itself) nor the kinematic cage slip (in
         percentage points) drifted by more than ``tolerance_percent`` between the last
         sixth of the run and the sixth before it."""
+        if self.time[-1] - self.time[0] < minimum_time:
+            return False
         cage_percent = 100.0 * self.cage_speed / max(abs(float(np.mean(self.cage_speed))), 1e-300)
         return (settled(self.time, cage_percent, tolerance_percent)
                 and settled(self.time, self.kinematic_cage_slip_percent, tolerance_percent))

@@ -15,7 +15,7 @@ exu = pytest.importorskip("exudyn")
 from contact.ballrace import ContactLaw  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_LUBRICANT, races  # noqa: E402
 from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
-from exudyn_bearing.simulate import SolverSettings, run_solver  # noqa: E402
+from exudyn_bearing.runner import SolverSettings, run_solver  # noqa: E402
 
 BRG = REFERENCE_BEARING
 

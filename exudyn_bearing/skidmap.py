@@ -1,0 +1,268 @@
+"""Skid-risk map: the dynamic model over a grid of axial load, radial load and speed
+(MODEL.md §7, §9), run in parallel local processes or on a Dask cluster.
+
+Each grid point is one :func:`exudyn_bearing.runner.simulate` run. Results are
+appended to ``points.jsonl`` as they arrive, so an interrupted map keeps what it has
+and a second call with the same ``out`` directory resumes.
+"""
+from __future__ import annotations
+
+import csv
+import itertools
+import json
+import math
+import os
+import time as _time
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import asdict, dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from contact.lubricant import Lubricant
+from .bearing import BallDrag, Bearing
+from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+
+__all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range", "hirano_minimum_axial"]
+
+#: Default grid of ``python -m exudyn_bearing skid-map`` (about 5 minutes on 2 cores).
+DEFAULT_AXIAL = (300.0, 800.0, 1500.0, 3000.0)
+DEFAULT_RPM = (900.0, 1800.0)
+DEFAULT_TIME = 0.1
+
+
+def parse_range(text: str) -> list[float]:
+    """'start:stop:count' (inclusive, evenly spaced) or a comma list 'a,b,c'."""
+    text = text.strip()
+    try:
+        if ":" in text:
+            start, stop, count = text.split(":")
+            n = int(count)
+            if n < 1:
+                raise ValueError
+            return [float(v) for v in np.linspace(float(start), float(stop), n)]
+        return [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ValueError(f"range must be 'start:stop:count' or 'a,b,c', got {text!r}") from None
+
+
+def hirano_minimum_axial(bearing: Bearing, rpm: float) -> float:
+    """Hirano's criterion as the paper quotes it: gross sliding when Z F_c / F_a > 0.1,
+    i.e. F_a,min = 10 Z F_c with F_c = m r_p w_c² at the nominal cage speed, N."""
+    cage = bearing.cage_speed(rpm * math.pi / 30.0)
+    return 10.0 * bearing.balls * bearing.ball_mass * bearing.pitch_radius * cage ** 2
+
+
+@dataclass
+class SkidPoint:
+    """One grid point (SI units; slips in %, speeds in rpm)."""
+
+    axial: float
+    radial: float
+    rpm: float
+    time: float
+    cage_slip_percent: float | None = None
+    kinematic_cage_slip_percent: float | None = None
+    peak_ball_slip: float | None = None  #: largest ball–race slip speed over the last third, m/s
+    settled: bool | None = None
+    wall_time_s: float | None = None
+    error: str | None = None
+
+    @property
+    def key(self):
+        return (self.axial, self.radial, self.rpm, self.time)
+
+
+def _run_point(args) -> dict:
+    """Worker: one dynamic run; never raises (errors are reported in the point)."""
+    point, bearing, lubricant, drag = args
+    start = _time.perf_counter()
+    try:
+        from .runner import simulate
+
+        s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=point.time,
+                     drag=drag)
+        res = s.results
+        last = res.last(1 / 3)
+        peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))
+        done = replace(point, cage_slip_percent=s.cage_slip_percent,
+                       kinematic_cage_slip_percent=s.kinematic_cage_slip_percent, peak_ball_slip=peak,
+                       settled=s.settled)
+    except Exception as err:  # a failed point is reported, the map goes on
+        done = replace(point, error=f"{type(err).__name__}: {err}".splitlines()[0][:300])
+    done.wall_time_s = _time.perf_counter() - start
+    return asdict(done)
+
+
+@dataclass
+class SkidMap:
+    """Result table of :func:`skid_map`."""
+
+    bearing: Bearing
+    points: list = field(default_factory=list)
+
+    def thresholds(self, level: float = 1.0) -> list[dict]:
+        """Per (rpm, radial): the smallest axial load with kinematic cage slip below
+        ``level`` %, interpolated linearly between the grid loads around the crossing,
+        and Hirano's F_a,min for comparison."""
+        out = []
+        groups = sorted({(p.rpm, p.radial) for p in self.points})
+        for rpm, radial in groups:
+            pts = sorted((p for p in self.points if p.rpm == rpm and p.radial == radial and p.error is None),
+                         key=lambda p: p.axial)
+            estimate, note = None, "no point below the level"
+            for lo, hi in zip(pts, pts[1:]):
+                if lo.kinematic_cage_slip_percent >= level > hi.kinematic_cage_slip_percent:
+                    s0, s1 = lo.kinematic_cage_slip_percent, hi.kinematic_cage_slip_percent
+                    estimate = lo.axial + (s0 - level) * (hi.axial - lo.axial) / (s0 - s1)
+                    note = "interpolated" + ("" if lo.settled and hi.settled else " (from unsettled points)")
+                    break
+            else:
+                if pts and pts[0].kinematic_cage_slip_percent < level:
+                    estimate, note = pts[0].axial, "at or below the lightest load"
+            out.append(dict(rpm=rpm, radial=radial, minimum_axial=estimate, note=note,
+                            hirano_minimum_axial=hirano_minimum_axial(self.bearing, rpm)))
+        return out
+
+    def write(self, out: Path) -> None:
+        """CSV, markdown and thresholds JSON (and a PNG with matplotlib)."""
+        out = Path(out)
+        out.mkdir(parents=True, exist_ok=True)
+        names = [f for f in SkidPoint.__dataclass_fields__]
+        rows = sorted(self.points, key=lambda p: (p.rpm, p.radial, p.axial))
+        with open(out / "skid_map.csv", "w", newline="") as fh:
+            writer = csv.writer(fh)
+            writer.writerow(names)
+            for p in rows:
+                writer.writerow([getattr(p, n) for n in names])
+        (out / "skid_map.md").write_text(self.markdown() + "\n")
+        (out / "thresholds.json").write_text(json.dumps(self.thresholds(), indent=1))
+        self.plot(out / "skid_map.png")
+
+    def markdown(self) -> str:
+        lines = ["| rpm | F_r (N) | F_a (N) | kinematic_cage_slip_percent | cage slip P19 (%) | peak ball slip (m/s) | settled | note |",
+                 "|---:|---:|---:|---:|---:|---:|:---:|---|"]
+        for p in sorted(self.points, key=lambda p: (p.rpm, p.radial, p.axial)):
+            if p.error:
+                lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | – | – | – | – | failed: {p.error} |")
+            else:
+                lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | {p.kinematic_cage_slip_percent:.3f} | "
+                             f"{p.cage_slip_percent:.3f} | {p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | |")
+        lines += ["", "| rpm | F_r (N) | min. F_a for kinematic slip < 1 % (N) | how | Hirano 10 Z F_c (N) |",
+                  "|---:|---:|---:|---|---:|"]
+        for t in self.thresholds():
+            est = f"{t['minimum_axial']:.0f}" if t["minimum_axial"] is not None else "–"
+            lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {t['note']} | {t['hirano_minimum_axial']:.0f} |")
+        return "\n".join(lines)
+
+    def plot(self, path) -> bool:
+        try:
+            import matplotlib
+            matplotlib.use("Agg")
+            import matplotlib.pyplot as plt
+        except ImportError:
+            return False
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for rpm in sorted({p.rpm for p in self.points}):
+            for radial in sorted({p.radial for p in self.points}):
+                pts = sorted((p for p in self.points if p.rpm == rpm and p.radial == radial and p.error is None),
+                             key=lambda p: p.axial)
+                if not pts:
+                    continue
+                line, = ax.plot([p.axial for p in pts], [p.kinematic_cage_slip_percent for p in pts], "o-",
+                                label=f"{rpm:g} rpm, F_r {radial:g} N")
+                ax.plot([p.axial for p in pts if not p.settled], [p.kinematic_cage_slip_percent for p in pts if not p.settled],
+                        "x", color="red", ms=10)
+                ax.axvline(hirano_minimum_axial(self.bearing, rpm), color=line.get_color(), ls=":", lw=1)
+        ax.axhline(1.0, color="grey", lw=0.8)
+        ax.set(xlabel="axial load (N)", ylabel="kinematic cage slip (%)",
+               title="Skid-risk map (x: not settled; dotted: Hirano 10 Z F_c)")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+        return True
+
+
+def _load_done(path: Path) -> dict:
+    done = {}
+    if path.exists():
+        for line in path.read_text().splitlines():
+            if line.strip():
+                try:
+                    p = SkidPoint(**json.loads(line))
+                except (json.JSONDecodeError, TypeError):
+                    continue  # a line cut by an interruption
+                done[p.key] = p
+    return done
+
+
+def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
+             axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float = DEFAULT_TIME,
+             drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
+             progress=print) -> SkidMap:
+    """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) for
+    ``time`` s each and return a :class:`SkidMap`.
+
+    Parameters
+    ----------
+    out : path, optional
+        Directory for ``points.jsonl`` (incremental, resumable), CSV, markdown, thresholds
+        and PNG.
+    workers : int, optional
+        Local worker processes (default: CPU count).
+    client : dask.distributed.Client, optional
+        Run on this Dask cluster instead of local processes.
+    progress : callable or None
+        Called with one line per finished point (runs done, time left).
+    """
+    grid = [SkidPoint(float(a), float(r), float(n), float(time)) for n, r, a in itertools.product(rpm, radial, axial)]
+    if not grid:
+        raise ValueError("axial, radial, rpm: the grid is empty")
+    journal = Path(out) / "points.jsonl" if out is not None else None
+    done = {}
+    if journal is not None:
+        journal.parent.mkdir(parents=True, exist_ok=True)
+        done = _load_done(journal)
+    todo = [p for p in grid if p.key not in done]
+    result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done])
+    if progress and done:
+        progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
+    start = _time.perf_counter()
+    jobs = [(p, bearing, lubricant, drag) for p in todo]
+
+    def record(data):
+        point = SkidPoint(**data)
+        result.points.append(point)
+        if journal is not None:
+            with open(journal, "a") as fh:
+                fh.write(json.dumps(data) + "\n")
+        if progress:
+            finished = len(result.points) - len(done)
+            elapsed = _time.perf_counter() - start
+            left = elapsed / finished * (len(todo) - finished)
+            state = f"FAILED ({point.error})" if point.error else (
+                f"kinematic slip {point.kinematic_cage_slip_percent:.3f} %" + ("" if point.settled else " (not settled)"))
+            progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
+                     f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
+
+    if client is not None:
+        futures = client.map(_run_point, jobs, pure=False)
+        from dask.distributed import as_completed as dask_completed
+
+        for fut in dask_completed(futures):
+            record(fut.result())
+    elif todo:
+        n = workers or os.cpu_count() or 1
+        if n == 1:
+            for job in jobs:
+                record(_run_point(job))
+        else:
+            with ProcessPoolExecutor(max_workers=min(n, len(jobs))) as pool:
+                for fut in as_completed([pool.submit(_run_point, job) for job in jobs]):
+                    record(fut.result())
+    order = {p.key: i for i, p in enumerate(grid)}
+    result.points.sort(key=lambda p: order[p.key])
+    if out is not None:
+        result.write(Path(out))
+    return result

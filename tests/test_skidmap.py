@@ -1,0 +1,90 @@
+"""Skid-risk map engine (issue: main job): grid, incremental results, resume, failures,
+thresholds, Hirano's criterion, and Dask execution identical to local processes."""
+import json
+import math
+
+import pytest
+
+from exudyn_bearing import REFERENCE_BEARING as B
+from exudyn_bearing import skidmap
+from exudyn_bearing.skidmap import SkidMap, SkidPoint, hirano_minimum_axial, parse_range, skid_map
+
+SHORT = 0.003  # s simulated per point: these tests check the engine, not the physics
+
+
+def test_parse_range():
+    assert parse_range("200:3000:8")[0] == 200 and parse_range("200:3000:8")[-1] == 3000
+    assert len(parse_range("200:3000:8")) == 8
+    assert parse_range("900,1800, 2700") == [900.0, 1800.0, 2700.0]
+    with pytest.raises(ValueError, match="range"):
+        parse_range("1:2:x")
+
+
+def test_hirano_reference_bearing():
+    """Paper: gross sliding when Z F_c / F_a > 0.1; ~5.4 kN at 1800 rpm (issue text)."""
+    w_c = 1800 * math.pi / 30 / 2 * (1 - 0.025 * math.cos(math.radians(40)) / 0.155)
+    f_c = 0.064 * 0.0775 * w_c ** 2
+    assert hirano_minimum_axial(B, 1800) == pytest.approx(10 * 16 * f_c, rel=1e-12)
+    assert hirano_minimum_axial(B, 1800) == pytest.approx(5400, rel=0.01)
+
+
+def test_threshold_interpolation():
+    pts = [SkidPoint(a, 0.0, 1800.0, 0.1, kinematic_cage_slip_percent=s, cage_slip_percent=s, peak_ball_slip=0.1,
+                     settled=True) for a, s in ((500, 8.0), (1000, 3.0), (2000, 0.5), (3000, 0.2))]
+    t = SkidMap(B, pts).thresholds()[0]
+    # between (1000 N, 3 %) and (2000 N, 0.5 %): 1000 + (3 - 1) / 2.5 * 1000
+    assert t["minimum_axial"] == pytest.approx(1800.0) and t["note"] == "interpolated"
+    assert t["hirano_minimum_axial"] == pytest.approx(hirano_minimum_axial(B, 1800))
+
+
+def test_local_run_writes_incrementally_and_resumes(tmp_path):
+    lines = []
+    result = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
+                      progress=lines.append)
+    assert len(result.points) == 2 and all(p.error is None for p in result.points)
+    journal = (tmp_path / "points.jsonl").read_text().splitlines()
+    assert len(journal) == 2
+    header = (tmp_path / "skid_map.csv").read_text().splitlines()[0].split(",")
+    assert "kinematic_cage_slip_percent" in header
+    assert "Hirano" in (tmp_path / "skid_map.md").read_text()
+    # heavier load, less slip (a physics smoke check on the engine's plumbing)
+    by_load = {p.axial: p for p in result.points}
+    assert by_load[3000.0].kinematic_cage_slip_percent < by_load[1300.0].kinematic_cage_slip_percent
+    # second call: nothing recomputed, same table
+    lines.clear()
+    again = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
+                     progress=lines.append)
+    assert len((tmp_path / "points.jsonl").read_text().splitlines()) == 2
+    assert lines and lines[0].startswith("resuming: 2 of 2")
+    assert [p.kinematic_cage_slip_percent for p in again.points] == [p.kinematic_cage_slip_percent for p in result.points]
+
+
+def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
+    import exudyn_bearing.runner as sim
+
+    real = sim.simulate
+
+    def flaky(*args, **kwargs):
+        if kwargs["axial"] == 999.0:
+            raise sim.BearingSimulationError("ball 3 inner contact diverged")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(sim, "simulate", flaky)
+    result = skid_map(axial=[999.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=1, progress=None)
+    bad, good = result.points
+    assert bad.error is not None and "ball 3 inner contact diverged" in bad.error
+    assert good.error is None and good.kinematic_cage_slip_percent is not None
+    assert "failed: BearingSimulationError" in (tmp_path / "skid_map.md").read_text()
+    assert json.loads((tmp_path / "points.jsonl").read_text().splitlines()[0])["error"]
+
+
+def test_dask_local_cluster_gives_identical_results(tmp_path):
+    distributed = pytest.importorskip("dask.distributed")
+    local = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, workers=1, progress=None)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        remote = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, client=client, progress=None)
+    for a, b in zip(local.points, remote.points):
+        assert a.key == b.key
+        assert a.kinematic_cage_slip_percent == b.kinematic_cage_slip_percent
+        assert a.cage_slip_percent == b.cage_slip_percent
