@@ -284,6 +284,17 @@ def _radial_patterns(n_rad):
     return cols
 
 
+
+def _ray_nodes_to_ellipse(a, b, xo, yo, rho, c, s, jac, wpsi, p, k):
+    """Map ray nodes (distance rho along directions (c, s) from the normalized origin
+    (xo, yo)) to ellipse coordinates x = b X, y = a Y and area weights a b rho |dJ| w."""
+    x = (b * xo)[:, None, None] + rho * (b[:, None] * c)[:, None, :]
+    y = (a * yo)[:, None, None] + rho * (a[:, None] * s)[:, None, :]
+    rho *= jac
+    rho *= ((a * b)[:, None] * wpsi)[:, None, :]
+    return x.reshape(k, -1), y.reshape(k, -1), rho.reshape(k, -1), p.reshape(k, -1)
+
+
 def _rays_inside(xo, yo, psi, wpsi, a, b, pm, rho_pole, n_rad, graded):
     """Rays from an origin (xo, yo) inside the unit disc: ρ ∈ [0, ρ_max(ψ)].
 
@@ -324,11 +335,7 @@ def _rays_inside(xo, yo, psi, wpsi, a, b, pm, rho_pole, n_rad, graded):
     gap *= rho + rho_2[:, None, :]  # 1 − X² − Y²
     p = np.sqrt(gap, out=gap)
     p *= pm[:, None, None]
-    x = (b * xo)[:, None, None] + rho * (b[:, None] * c)[:, None, :]
-    y = (a * yo)[:, None, None] + rho * (a[:, None] * s)[:, None, :]
-    rho *= jac
-    rho *= ((a * b)[:, None] * wpsi)[:, None, :]
-    return x.reshape(k, -1), y.reshape(k, -1), rho.reshape(k, -1), p.reshape(k, -1)
+    return _ray_nodes_to_ellipse(a, b, xo, yo, rho, c, s, jac, wpsi, p, k)
 
 
 def _rays_outside(xo, yo, rp, psi_c, delta, theta, wth, a, b, pm, n_rad):
@@ -372,11 +379,7 @@ def _rays_outside(xo, yo, rp, psi_c, delta, theta, wth, a, b, pm, n_rad):
     rho = (m + sgn * hc) - sgn * gap
     p = np.sqrt(gap * (2.0 * hc - gap))  # √(1 − X² − Y²)
     p *= pm[:, None, None]
-    x = (b * xo)[:, None, None] + rho * (b[:, None] * c)[:, None, :]
-    y = (a * yo)[:, None, None] + rho * (a[:, None] * s)[:, None, :]
-    rho *= jac
-    rho *= ((a * b)[:, None] * wpsi)[:, None, :]
-    return x.reshape(k, -1), y.reshape(k, -1), rho.reshape(k, -1), p.reshape(k, -1)
+    return _ray_nodes_to_ellipse(a, b, xo, yo, rho, c, s, jac, wpsi, p, k)
 
 
 # ---------------------------------------------------------------------------------------

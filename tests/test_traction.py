@@ -140,15 +140,21 @@ def test_thermal_factor():
     assert grid[np.argmax(grid * thermal_factor(grid ** 2))] == pytest.approx(1.509, abs=2e-3)
 
 
-def test_uniform_viscosity_closed_form_curve():
-    """c_ηP = 0: f = π a b (1/h) √(8 K η/c_ηT) asinh(s)/√(1+s²), s = c1 |u| (no spin)."""
+def _uniform_viscosity_curve():
+    """(u, closed-form |f|) for c_ηP = 0, no spin: f = π a b (1/h) √(8 K η/c_ηT)
+    asinh(s)/√(1+s²), s = c1 |u|, over the heavy contact's ellipse."""
     a, b = HEAVY["a"], HEAVY["b"]
     eta, k, c = 0.04, 0.14, 0.05
     c1 = math.sqrt(eta * c / (8 * k))
     for u in [1e-3, 1.0, 1.51 / c1, 100.0, 1e4]:
         s = c1 * u
-        exact = (math.pi * a * b / H * math.sqrt(8 * k * eta / c)
-                 * math.asinh(s) / math.sqrt(1 + s * s))
+        yield u, math.pi * a * b / H * math.sqrt(8 * k * eta / c) * math.asinh(s) / math.sqrt(1 + s * s)
+
+
+def test_uniform_viscosity_closed_form_curve():
+    """c_ηP = 0: f = π a b (1/h) √(8 K η/c_ηT) asinh(s)/√(1+s²), s = c1 |u| (no spin)."""
+    a, b = HEAVY["a"], HEAVY["b"]
+    for u, exact in _uniform_viscosity_curve():
         t = crook_traction(0.6 * u, -0.8 * u, 0.0, a, b, 1e9, H, ISO)
         assert math.hypot(t.fx, t.fy) == pytest.approx(exact, rel=1e-10)
         assert t.fy / t.fx == pytest.approx(-0.8 / 0.6, rel=1e-12)
@@ -316,9 +322,10 @@ def test_jacobian_with_limiting_shear_integrates_to_the_forces():
 # ---------------------------------------------------------------------------------------
 # 7. Vectorisation, shapes, zero slip
 # ---------------------------------------------------------------------------------------
-def test_batch_equals_one_by_one():
-    rng = np.random.default_rng(8)
-    n = 14
+def _random_contacts(n, seed=8):
+    """n generic contacts: no spin on the first three, zero slip on the fourth, the fifth
+    unloaded (a = 0)."""
+    rng = np.random.default_rng(seed)
     ux = rng.normal(0, 0.05, n)
     uy = rng.normal(0, 0.01, n)
     w = rng.uniform(-300, 300, n)
@@ -327,8 +334,14 @@ def test_batch_equals_one_by_one():
     a = rng.uniform(0.8e-3, 2.5e-3, n)
     b = a / rng.uniform(8, 16, n)
     pm = rng.uniform(0.3e9, 1.2e9, n)
-    a[4] = 0.0  # unloaded contact
+    a[4] = 0.0
     h = rng.uniform(0.3e-6, 1e-6, n)
+    return ux, uy, w, a, b, pm, h
+
+
+def test_batch_equals_one_by_one():
+    n = 14
+    ux, uy, w, a, b, pm, h = _random_contacts(n)
     batch = crook_traction(ux, uy, w, a, b, pm, h, REF, derivatives=True)
     for i in range(n):
         one = crook_traction(ux[i], uy[i], w[i], a[i], b[i], pm[i], h[i], REF, derivatives=True)
@@ -509,18 +522,8 @@ def test_fast_rule_jacobian_matches_finite_differences():
 
 
 def test_fast_rule_batch_shapes_and_unloaded_contacts():
-    rng = np.random.default_rng(8)
     n = 14
-    ux = rng.normal(0, 0.05, n)
-    uy = rng.normal(0, 0.01, n)
-    w = rng.uniform(-300, 300, n)
-    w[:3] = 0.0
-    ux[3], uy[3] = 0.0, 0.0
-    a = rng.uniform(0.8e-3, 2.5e-3, n)
-    b = a / rng.uniform(8, 16, n)
-    pm = rng.uniform(0.3e9, 1.2e9, n)
-    a[4] = 0.0  # unloaded contact
-    h = rng.uniform(0.3e-6, 1e-6, n)
+    ux, uy, w, a, b, pm, h = _random_contacts(n)
     batch = crook_traction(ux, uy, w, a, b, pm, h, REF, derivatives=True, fast=True)
     assert _forces(batch)[:, 4].tolist() == [0.0, 0.0, 0.0, 0.0]
     for i in range(n):
@@ -542,13 +545,7 @@ def test_fast_rule_batch_shapes_and_unloaded_contacts():
 
 def test_fast_rule_closed_forms():
     a, b = HEAVY["a"], HEAVY["b"]
-    # uniform viscosity, no spin (see test_uniform_viscosity_closed_form_curve)
-    eta, k, c = 0.04, 0.14, 0.05
-    c1 = math.sqrt(eta * c / (8 * k))
-    for u in [1e-3, 1.0, 1.51 / c1, 100.0, 1e4]:
-        s = c1 * u
-        exact = (math.pi * a * b / H * math.sqrt(8 * k * eta / c)
-                 * math.asinh(s) / math.sqrt(1 + s * s))
+    for u, exact in _uniform_viscosity_curve():  # see test_uniform_viscosity_closed_form_curve
         t = crook_traction(0.6 * u, -0.8 * u, 0.0, a, b, 1e9, H, ISO, fast=True)
         assert math.hypot(t.fx, t.fy) == pytest.approx(exact, rel=1e-5)
         assert t.heat == pytest.approx(exact * u, rel=1e-5)
