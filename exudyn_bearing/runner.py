@@ -114,6 +114,11 @@ def _exudyn_settings(settings: SolverSettings, end_time: float):
     return s
 
 
+def _where(handles) -> str:
+    found = [h.connector.first_non_finite for h in handles if h.connector.first_non_finite]
+    return f" ({found[0]})" if found else ""
+
+
 def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverSettings()) -> RunInfo:
     """Integrate an assembled ``mbs`` containing the given bearing handles to
     ``end_time`` s; installs the block Jacobian on their connectors (implicit solvers)
@@ -128,6 +133,8 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
                 return con.jacobian(t, np.asarray(q) + ref, np.asarray(q_t), f_q, f_qt)
 
             mbs.SetObjectParameter(h.contactObject, "jacobianUserFunction", jac)
+    for h in handles:
+        h.connector.first_non_finite = None
     s = _exudyn_settings(settings, end_time)
     exu.config.printToConsole = False
     start = _time.perf_counter()
@@ -135,19 +142,20 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
                               showCausingItems=False)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
-        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s: {err}") from err
+        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s{_where(handles)}: "
+                                     f"{err}") from err
     wall = _time.perf_counter() - start
     sol = mbs.sys.get("dynamicSolver")
     it = getattr(sol, "it", None)
     info = RunInfo(asdict(settings), wall, int(getattr(it, "currentStepIndex", 0) or s.timeIntegration.numberOfSteps),
                    getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None))
     if not ok:
-        raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s); "
-                                     "try a smaller step or the implicit solver")
+        raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
+                                     f"{_where(handles)}; try a smaller step or generalized-alpha")
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not np.all(np.isfinite(q)) or not np.all(np.isfinite(mbs.systemData.GetODE2Coordinates_t())):
-        raise BearingSimulationError(f"solver {settings.solver} produced NaN (step {settings.step:g} s): "
-                                     "the contacts are too stiff for this step; use generalized-alpha")
+        raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles)}: "
+                                     "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
     return info
 
 
