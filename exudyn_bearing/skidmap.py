@@ -175,6 +175,7 @@ class SkidMap:
                         "x", color="red", ms=10)
                 ax.axvline(hirano_minimum_axial(self.bearing, rpm), color=line.get_color(), ls=":", lw=1)
         ax.axhline(1.0, color="grey", lw=0.8)
+        ax.set_yscale("symlog", linthresh=0.1)  # the 1 % threshold region stays readable
         ax.set(xlabel="axial load (N)", ylabel="kinematic cage slip (%)",
                title="Skid-risk map (x: not settled; dotted: Hirano 10 Z F_c)")
         ax.legend(fontsize=8)
