@@ -176,6 +176,8 @@ class SkidMap:
                 ax.axvline(hirano_minimum_axial(self.bearing, rpm), color=line.get_color(), ls=":", lw=1)
         ax.axhline(1.0, color="grey", lw=0.8)
         ax.set_yscale("symlog", linthresh=0.1)  # the 1 % threshold region stays readable
+        slips = [p.kinematic_cage_slip_percent for p in self.points if p.error is None]
+        ax.set_ylim(bottom=min(0.0, *slips) if slips else 0.0)
         ax.set(xlabel="axial load (N)", ylabel="kinematic cage slip (%)",
                title="Skid-risk map (x: not settled; dotted: Hirano 10 Z F_c)")
         ax.legend(fontsize=8)
