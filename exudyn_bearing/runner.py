@@ -136,7 +136,8 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
     for h in handles:
         h.connector.first_non_finite = None
     s = _exudyn_settings(settings, end_time)
-    exu.config.printToConsole = False
+    printing = exu.config.printToConsole
+    exu.config.printToConsole = False  # quiet for the run, restored below
     start = _time.perf_counter()
     try:
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
@@ -144,6 +145,8 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
     except Exception as err:  # Exudyn raises on Newton failure or NaN
         raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s{_where(handles)}: "
                                      f"{err}") from err
+    finally:
+        exu.config.printToConsole = printing
     wall = _time.perf_counter() - start
     sol = mbs.sys.get("dynamicSolver")
     it = getattr(sol, "it", None)
