@@ -31,9 +31,6 @@ def cross(a, b):
     return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
-_cross = cross
-
-
 def _dot(a, b):
     return np.einsum("...i,...i->...", a, b)
 
@@ -99,22 +96,22 @@ def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, ra
     con = geometry.groove_contact(local, *groove, race)
     n = np.einsum("nij,nj->ni", rot, con.normal)
     t1 = np.einsum("nij,nj->ni", rot, cross([0.0, 0.0, 1.0], con.radial))
-    t2 = _cross(n, t1)
+    t2 = cross(n, t1)
     p = c + ball_radius * n
     w_b = np.asarray(ball_omega, dtype=float)
     w_r = np.broadcast_to(np.asarray(race_omega, dtype=float), c.shape)
     v_o = np.broadcast_to(np.asarray(race_velocity, dtype=float), c.shape)
-    v_ball_p = ball_velocity + _cross(w_b, p - c)
-    v_race_p = v_o + _cross(w_r, p - race_origin)
+    v_ball_p = ball_velocity + cross(w_b, p - c)
+    v_race_p = v_o + cross(w_r, p - race_origin)
     slip = v_race_p - v_ball_p
     g = np.einsum("nij,nj->ni", rot, con.groove_centre) + race_origin
-    v_groove = v_o + _cross(w_r, g - race_origin)
+    v_groove = v_o + cross(w_r, g - race_origin)
     rate = _dot(ball_velocity - v_groove, n)
     rho_c = np.hypot(local[:, 0], local[:, 1])
     p_local = local + ball_radius * con.normal
     rho_p = np.hypot(p_local[:, 0], p_local[:, 1])
     # the contact moves with the ball's orbit about the race axis, relative to the race:
-    orbit_rel = _dot(ball_velocity - (v_o + _cross(w_r, rel)), t1) / rho_c
+    orbit_rel = _dot(ball_velocity - (v_o + cross(w_r, rel)), t1) / rho_c
     u_x = _dot(slip, t1)
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     return ContactKinematics(con.penetration, rate, n, t1, t2, p, con.contact_angle, u_x, _dot(slip, t2),
@@ -160,7 +157,7 @@ def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_s
     rhs = []
     for i, (p, speed) in enumerate(((inner_point, inner_speed), (outer_point, outer_speed))):
         p = np.asarray(p, dtype=float)
-        rows.append(np.stack([r_c, _dot(_cross(e, p - c), t1)], axis=1))
+        rows.append(np.stack([r_c, _dot(cross(e, p - c), t1)], axis=1))
         if surface_speeds is None:
             rhs.append(speed * _dot(cross([0.0, 0.0, 1.0], p), t1))  # race surface speed w rho_p
         else:
