@@ -277,7 +277,8 @@ class BearingConnector:
         perturbation of the same coordinate of all balls at once gives every ball's
         block; race and cage columns are perturbed one at a time. Rotation columns are
         derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
-        which is what Exudyn's Lie-group nodes expect. Forward differences.
+        which is what Exudyn's Lie-group nodes expect. Forward differences. Ball j sits in
+        slot j (the builder's layout), so per-ball reactions index like the slots.
         """
         pos, rot, vel, wl = self.decode(q, q_t)
         base, base_react = self.forces(t, pos, rot, vel, wl, split=True)
@@ -285,12 +286,13 @@ class BearingConnector:
         dq = np.zeros((n6, n6))
         dv = np.zeros((n6, n6))
         balls = np.asarray(self.layout["balls"])
+        ball_slots = set(balls.tolist())
         coupled = self.cage.kind == "spring-chain"
-        others = [s for s in range(self.n_nodes) if s not in set(balls.tolist())]
+        others = [s for s in range(self.n_nodes) if s not in ball_slots]
         groups = [balls] if not coupled else [np.array([b]) for b in balls]
         groups += [np.array([s]) for s in others]
         for group in groups:
-            is_balls = len(group) > 1 or group[0] in set(balls.tolist())
+            is_balls = int(group[0]) in ball_slots
             for k in range(6):
                 for which, eps in (("q", eps_rotation if k >= 3 else eps_position), ("v", eps_velocity)):
                     p2, r2, v2, w2 = pos.copy(), rot.copy(), vel.copy(), wl.copy()
