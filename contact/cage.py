@@ -25,10 +25,11 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
 
     Parameters
     ----------
-    ball_centre, ball_velocity : ndarray, (n, 3)
-    cage_origin, cage_velocity, cage_omega : ndarray, (3,)
-    cage_rotation : ndarray, (3, 3)
-        Cage frame -> global; third column is the bearing axis.
+    ball_centre, ball_velocity : ndarray, (..., n, 3)
+    cage_origin, cage_velocity, cage_omega : ndarray, (..., 3)
+    cage_rotation : ndarray, (..., 3, 3)
+        Cage frame -> global; third column is the bearing axis. Leading axes (a batch of
+        states) broadcast.
     pocket_angles : ndarray, (n,)
         rad, in the cage frame.
     pitch_radius, clearance : float
@@ -38,11 +39,13 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
     """
     local_centre = np.stack([np.cos(pocket_angles), np.sin(pocket_angles), np.zeros_like(pocket_angles)], axis=1)
     local_dir = np.stack([-np.sin(pocket_angles), np.cos(pocket_angles), np.zeros_like(pocket_angles)], axis=1)
-    centre = cage_origin + pitch_radius * local_centre @ cage_rotation.T
-    e = local_dir @ cage_rotation.T
-    s = np.einsum("ij,ij->i", ball_centre - centre, e)
-    v_pocket = cage_velocity + cross(cage_omega, centre - cage_origin)
-    s_dot = np.einsum("ij,ij->i", ball_velocity - v_pocket, e)
+    origin = np.asarray(cage_origin, dtype=float)[..., None, :]
+    centre = origin + pitch_radius * np.einsum("...ij,nj->...ni", cage_rotation, local_centre)
+    e = np.einsum("...ij,nj->...ni", cage_rotation, local_dir)
+    s = np.einsum("...j,...j->...", ball_centre - centre, e)
+    v_pocket = np.asarray(cage_velocity, dtype=float)[..., None, :] + cross(
+        np.asarray(cage_omega, dtype=float)[..., None, :], centre - origin)
+    s_dot = np.einsum("...j,...j->...", ball_velocity - v_pocket, e)
     gap = 0.5 * clearance
     if gap == 0:
         magnitude = -stiffness * s - damping * s_dot
@@ -50,7 +53,7 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
         sign = np.sign(s)
         pen = np.abs(s) - gap
         magnitude = np.where(pen > 0, -sign * np.maximum(stiffness * pen + damping * s_dot * sign, 0.0), 0.0)
-    return magnitude[:, None] * e
+    return magnitude[..., None] * e
 
 
 def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
@@ -59,13 +62,13 @@ def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
     Each spring's length is the chord between neighbouring ball centres projected on the
     bearing plane, its free length the nominal chord 2 r_p sin(pi/Z).
     """
-    c = np.asarray(ball_centre, dtype=float)
-    planar = c - np.outer(c @ axis, axis)
-    chord = np.roll(planar, -1, axis=0) - planar  # ball i -> ball i+1
-    length = np.linalg.norm(chord, axis=1)
-    free = 2.0 * pitch_radius * np.sin(np.pi / len(c))
-    f = (stiffness * (length - free) / length)[:, None] * chord  # pulls ball i towards i+1 when stretched
-    return f - np.roll(f, 1, axis=0)
+    c = np.asarray(ball_centre, dtype=float)  # (..., n, 3)
+    planar = c - (c @ axis)[..., None] * axis
+    chord = np.roll(planar, -1, axis=-2) - planar  # ball i -> ball i+1
+    length = np.linalg.norm(chord, axis=-1)
+    free = 2.0 * pitch_radius * np.sin(np.pi / c.shape[-2])
+    f = (stiffness * (length - free) / length)[..., None] * chord  # pulls ball i towards i+1 when stretched
+    return f - np.roll(f, 1, axis=-2)
 
 
 def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius):
@@ -73,6 +76,6 @@ def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, dens
     F_D = 1/2 C_D rho pi r² v², v the circumferential ball-centre speed about ``axis``."""
     rel = np.asarray(ball_centre, dtype=float) - origin
     e_psi = cross(axis, rel)
-    e_psi /= np.linalg.norm(e_psi, axis=1, keepdims=True)
-    v = np.einsum("ij,ij->i", ball_velocity, e_psi)
-    return (-0.5 * drag_coefficient * density * np.pi * ball_radius ** 2 * np.abs(v) * v)[:, None] * e_psi
+    e_psi /= np.linalg.norm(e_psi, axis=-1, keepdims=True)
+    v = np.einsum("...j,...j->...", ball_velocity, e_psi)
+    return (-0.5 * drag_coefficient * density * np.pi * ball_radius ** 2 * np.abs(v) * v)[..., None] * e_psi

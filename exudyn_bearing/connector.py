@@ -144,19 +144,33 @@ class BearingConnector:
         self.cage_damping = cage.damping_for(bearing.ball_mass)
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
+        self._params_cache = {}
 
     # -- state of a race frame ---------------------------------------------------------
     def _race_frame(self, name, t, pos, vel, rot, omega):
+        """(origin, rotation, velocity, omega, slot) of a race frame for a batch of states
+        (leading axis B), global frame."""
         race: Race = self.races[name]
         slot = self.layout[name]
+        b = pos.shape[0]
         if slot is None:  # kinematic race
             w = race.speed(t) * self.axis
-            return self.origin, self.rotation, np.zeros(3), w, None
+            return (np.broadcast_to(self.origin, (b, 3)), np.broadcast_to(self.rotation, (b, 3, 3)),
+                    np.zeros((b, 3)), np.broadcast_to(w, (b, 3)), None)
         r_loc, rot_loc = self.race_frames[name]
-        a = rot[slot]
-        origin = pos[slot] + a @ r_loc
-        w = omega[slot]
-        return origin, a @ rot_loc, vel[slot] + cross(w, origin - pos[slot]), w, slot
+        a = rot[:, slot]
+        origin = pos[:, slot] + a @ r_loc
+        w = omega[:, slot]
+        return origin, a @ rot_loc, vel[:, slot] + cross(w, origin - pos[:, slot]), w, slot
+
+    def _contact_params(self, batch: int):
+        """Per-contact geometry arrays for ``batch`` states (cached: the Jacobian reuses one size)."""
+        if batch not in self._params_cache:
+            self._params_cache[batch] = (
+                tuple(np.tile(g, batch) for g in self.groove_all), np.tile(self.signs, batch),
+                replace(self.params, conformity=np.tile(self.params.conformity, batch),
+                        race=np.tile(self.signs, batch)))
+        return self._params_cache[batch]
 
     def decode(self, q, q_t):
         """Positions, rotation matrices, velocities and LOCAL angular velocities per node slot."""
@@ -188,75 +202,91 @@ class BearingConnector:
                 self.first_non_finite = self._non_finite(t, pos, vel, omega)
             nan = np.full(6 * self.n_nodes, np.nan)
             return (nan.reshape(-1, 6), np.full((self.z, self.n_nodes, 6), 0.0)) if split else nan
-        balls = self.layout["balls"]
-        c, v, w = pos[balls], vel[balls], omega[balls]
-        force = np.zeros((self.n_nodes, 3))
-        torque = np.zeros((self.n_nodes, 3))
-        # per-ball reactions on race and cage slots (force, torque about the slot's node)
-        react_f = np.zeros((self.z, self.n_nodes, 3))
-        react_t = np.zeros((self.z, self.n_nodes, 3))
+        out, react, parts = self._batch_forces(t, pos[None], rot[None], vel[None], omega[None])
+        out, react = out[0], react[0]
+        if split:
+            return out, react
+        out = out + react.sum(axis=0)
+        if not details:
+            return out.ravel()
+        kin_all, frc_all, cage_force, drag_force = parts
         z = self.z
+        halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
+        cage_slot = self.layout["cage"]
+        balls = self.layout["balls"]
+        return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
+                              cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
+                              self._race_frame("inner", t, pos[None], vel[None], rot[None], omega[None])[3][0],
+                              self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])[3][0],
+                              self.rotation, self.origin, out.ravel())
+
+    def _batch_forces(self, t, pos, rot, vel, omega):
+        """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
+        without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
+        to the race/cage slots (B, Z, n_nodes, 6), and (kinematics, forces, cage force,
+        drag force) of all B 2Z contacts. One vectorized evaluation of all contacts."""
+        bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
+        balls = self.layout["balls"]
+        c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
+        force = np.zeros((bsz, n_nodes, 3))
+        torque = np.zeros((bsz, n_nodes, 3))
+        # per-ball reactions on race and cage slots (force, torque about the slot's node)
+        react_f = np.zeros((bsz, z, n_nodes, 3))
+        react_t = np.zeros((bsz, z, n_nodes, 3))
         frames = {name: self._race_frame(name, t, pos, vel, rot, omega) for name in ("inner", "outer")}
-        race_omega = {name: fr[3] for name, fr in frames.items()}
 
-        def stacked(i, shape):
-            return np.concatenate([np.broadcast_to(frames[name][i], (z,) + shape) for name in ("inner", "outer")])
+        def stacked(i, shape):  # (B, 2Z, ...) -> (B 2Z, ...): inner contacts, then outer, per state
+            per_race = [np.broadcast_to(frames[name][i][:, None], (bsz, z) + shape) for name in ("inner", "outer")]
+            return np.concatenate(per_race, axis=1).reshape((-1,) + shape)
 
-        both = np.concatenate([c, c]), np.concatenate([v, v]), np.concatenate([w, w])
-        kin_all = ball_race_kinematics(*both, stacked(0, (3,)), stacked(1, (3, 3)), stacked(2, (3,)),
-                                       stacked(3, (3,)), self.groove_all, self.bearing.ball_radius, self.signs)
-        frc_all = ball_race_forces(kin_all, self.params, self.lubricant, self.law)
-        ball_force = frc_all.force[:z] + frc_all.force[z:]
-        ball_torque = frc_all.moment[:z] + frc_all.moment[z:]
-        for name, part in (("inner", slice(0, z)), ("outer", slice(z, 2 * z))):
+        def both(x):
+            return np.concatenate([x, x], axis=1).reshape(-1, 3)
+
+        grooves, signs, params = self._contact_params(bsz)
+        kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
+                                       stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
+        frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)
+        f_con = frc_all.force.reshape(bsz, 2, z, 3)
+        m_con = frc_all.moment.reshape(bsz, 2, z, 3)
+        for k, name in enumerate(("inner", "outer")):
             slot = frames[name][4]
             if slot is not None:
                 # the race gets -F at p and -M_z n: about its node that is
                 # -[(c - x_node) x F + moment about the ball centre]
-                react_f[:, slot] -= frc_all.force[part]
-                react_t[:, slot] -= cross(c - pos[slot], frc_all.force[part]) + frc_all.moment[part]
-        cage_force = np.zeros((self.z, 3))
-        cage_omega = None
+                react_f[:, :, slot] -= f_con[:, k]
+                react_t[:, :, slot] -= cross(c - pos[:, slot, None], f_con[:, k]) + m_con[:, k]
+        cage_force = np.zeros((bsz, z, 3))
         if self.cage.kind == "rigid":
             s = self.layout["cage"]
-            cage_omega = omega[s]
-            cage_force = cage_physics.pocket_forces(c, v, pos[s], rot[s], vel[s], omega[s], self.pocket_angles,
-                                                    self.bearing.pitch_radius, self.cage.clearance,
+            cage_force = cage_physics.pocket_forces(c, v, pos[:, s], rot[:, s], vel[:, s], omega[:, s],
+                                                    self.pocket_angles, self.bearing.pitch_radius, self.cage.clearance,
                                                     self.cage.stiffness, self.cage_damping)
-            react_f[:, s] -= cage_force
-            react_t[:, s] -= cross(c - pos[s], cage_force)
+            react_f[:, :, s] -= cage_force
+            react_t[:, :, s] -= cross(c - pos[:, s, None], cage_force)
         elif self.cage.kind == "spring-chain":
             cage_force = cage_physics.spring_chain_forces(c, self.axis, self.bearing.pitch_radius, self.cage.stiffness)
-        drag_force = np.zeros((self.z, 3))
+        drag_force = np.zeros((bsz, z, 3))
         if self.drag is not None and self.drag.drag_coefficient * self.drag.oil_volume_fraction > 0:
             drag_force = cage_physics.drag_forces(c, v, self.axis, self.origin, self.drag.drag_coefficient,
                                                   self.drag.oil_volume_fraction * self.lubricant.density,
                                                   self.bearing.ball_radius)
-        force[balls] += ball_force + cage_force + drag_force
-        torque[balls] += ball_torque
+        force[:, balls] += f_con.sum(axis=1) + cage_force + drag_force
+        torque[:, balls] += m_con.sum(axis=1)
         if self.layout["inner"] is not None:
-            force[self.layout["inner"]] += self.applied_force
-        out = np.empty((self.n_nodes, 6))
-        out[:, :3] = force
-        out[:, 3:] = np.einsum("nji,nj->ni", rot, torque)  # A^T tau: local-omega coordinates
-        react = np.empty((self.z, self.n_nodes, 6))
+            force[:, self.layout["inner"]] += self.applied_force
+        out = np.empty((bsz, n_nodes, 6))
+        out[..., :3] = force
+        out[..., 3:] = np.einsum("bnji,bnj->bni", rot, torque)  # A^T tau: local-omega coordinates
+        react = np.empty((bsz, z, n_nodes, 6))
         react[..., :3] = react_f
-        react[..., 3:] = np.einsum("nji,znj->zni", rot, react_t)
+        react[..., 3:] = np.einsum("bnji,bznj->bzni", rot, react_t)
         for slot, what in self.held.items():
-            out[slot, 3:] = 0.0
-            react[:, slot, 3:] = 0.0
+            out[:, slot, 3:] = 0.0
+            react[:, :, slot, 3:] = 0.0
             if what == "all":
-                out[slot, :3] = 0.0
-                react[:, slot, :3] = 0.0
-        if split:
-            return out, react
-        out += react.sum(axis=0)
-        if not details:
-            return out.ravel()
-        halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
-        return ConnectorState(t, c, v, w, halves[0], halves[1], halves[2], halves[3], cage_force,
-                              drag_force, cage_omega, race_omega["inner"], race_omega["outer"], self.rotation,
-                              self.origin, out.ravel())
+                out[:, slot, :3] = 0.0
+                react[:, :, slot, :3] = 0.0
+        return out, react, (kin_all, frc_all, cage_force, drag_force)
 
     def _non_finite(self, t, pos, vel, omega) -> str:
         """Where the state first became non-finite, as a sentence."""
@@ -277,47 +307,52 @@ class BearingConnector:
         perturbation of the same coordinate of all balls at once gives every ball's
         block; race and cage columns are perturbed one at a time. Rotation columns are
         derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
-        which is what Exudyn's Lie-group nodes expect. Forward differences. Ball j sits in
-        slot j (the builder's layout), so per-ball reactions index like the slots.
+        which is what Exudyn's Lie-group nodes expect. Forward differences; all perturbed
+        states go through ONE batched evaluation (per-call overhead dominates at 32
+        contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
+        like the slots.
         """
         pos, rot, vel, wl = self.decode(q, q_t)
-        base, base_react = self.forces(t, pos, rot, vel, wl, split=True)
         n6 = 6 * self.n_nodes
-        dq = np.zeros((n6, n6))
-        dv = np.zeros((n6, n6))
         balls = np.asarray(self.layout["balls"])
         ball_slots = set(balls.tolist())
         coupled = self.cage.kind == "spring-chain"
         others = [s for s in range(self.n_nodes) if s not in ball_slots]
         groups = [balls] if not coupled else [np.array([b]) for b in balls]
         groups += [np.array([s]) for s in others]
-        for group in groups:
-            is_balls = int(group[0]) in ball_slots
-            for k in range(6):
-                for which, eps in (("q", eps_rotation if k >= 3 else eps_position), ("v", eps_velocity)):
-                    p2, r2, v2, w2 = pos.copy(), rot.copy(), vel.copy(), wl.copy()
-                    if which == "q" and k < 3:
-                        p2[group, k] += eps
-                    elif which == "q":
-                        inc = np.zeros(3)
-                        inc[k - 3] = eps
-                        r2[group] = r2[group] @ rotation_matrices(inc[None])[0]
-                    elif k < 3:
-                        v2[group, k] += eps
-                    else:
-                        w2[group, k - 3] += eps
-                    out, react = self.forces(t, p2, r2, v2, w2, split=True)
-                    target = dq if which == "q" else dv
-                    if is_balls and not coupled:
-                        # ball rows: own block only; race/cage rows: that ball's contribution
-                        d_own = (out - base) / eps
-                        d_react = (react - base_react) / eps
-                        for b in group:
-                            col = 6 * b + k
-                            target[6 * b:6 * b + 6, col] = d_own[b]
-                            for s in others:
-                                target[6 * s:6 * s + 6, col] = d_react[b, s]
-                    else:
-                        col = 6 * group[0] + k
-                        target[:, col] = ((out + react.sum(axis=0)) - (base + base_react.sum(axis=0))).ravel() / eps
+        columns = [(group, k, which) for group in groups for k in range(6) for which in ("q", "v")]
+        nb = 1 + len(columns)
+        p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
+        v2, w2 = np.repeat(vel[None], nb, axis=0), np.repeat(wl[None], nb, axis=0)
+        steps = np.empty(len(columns))
+        for i, (group, k, which) in enumerate(columns, start=1):
+            if which == "q" and k < 3:
+                steps[i - 1] = eps_position
+                p2[i, group, k] += eps_position
+            elif which == "q":
+                steps[i - 1] = eps_rotation
+                inc = np.zeros(3)
+                inc[k - 3] = eps_rotation
+                r2[i, group] = r2[i, group] @ rotation_matrices(inc[None])[0]
+            else:
+                steps[i - 1] = eps_velocity
+                (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
+        if not (np.all(np.isfinite(p2[0])) and np.all(np.isfinite(v2[0])) and np.all(np.isfinite(w2[0]))):
+            return np.full((n6, n6), np.nan)
+        out, react, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2))
+        d_out = (out[1:] - out[0]) / steps[:, None, None]
+        d_react = (react[1:] - react[0]) / steps[:, None, None, None]
+        dq = np.zeros((n6, n6))
+        dv = np.zeros((n6, n6))
+        for i, (group, k, which) in enumerate(columns):
+            target = dq if which == "q" else dv
+            if int(group[0]) in ball_slots and not coupled:
+                # ball rows: own block only; race/cage rows: that ball's contribution
+                for b in group:
+                    col = 6 * b + k
+                    target[6 * b:6 * b + 6, col] = d_out[i, b]
+                    for s in others:
+                        target[6 * s:6 * s + 6, col] = d_react[i, b, s]
+            else:
+                target[:, 6 * group[0] + k] = (d_out[i] + d_react[i].sum(axis=0)).ravel()
         return -(f_q * dq + f_qt * dv)
