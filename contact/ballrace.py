@@ -76,6 +76,14 @@ class ContactLaw:
     limiting_shear : float or None
         Limiting shear-stress coefficient Lambda (tau <= Lambda p); None: off (paper).
     hertz_method : {'fit', 'exact'}
+    max_barus_exponent : float
+        Bound on the Barus exponent c_etaP p of the traction viscosity (MODEL.md §6): the
+        traction is evaluated with p_max <= max_barus_exponent / c_etaP (3.4 GPa for the
+        reference oil at 60, above the 100 kN case's 2.4 GPa and near ISO 76's 4.2 GPa static
+        limit). Below the cap nothing changes; above it the Newtonian slope is already
+        ~e^60 eta0/h, far beyond any slip the thermal Crook law lets through, so the force
+        is unaffected while absurd Newton trial states (tens of GPa) can no longer overflow
+        exp() into inf/NaN.
     """
 
     traction: str = "crook"
@@ -86,6 +94,7 @@ class ContactLaw:
     min_film_thickness: float = 1e-8
     limiting_shear: float | None = None
     hertz_method: str = "fit"
+    max_barus_exponent: float = 60.0
 
     def __post_init__(self) -> None:
         if self.traction not in TRACTION_MODELS:
@@ -96,6 +105,8 @@ class ContactLaw:
             raise ValueError(f"damping_ratio must be >= 0, got {self.damping_ratio!r}")
         if not (np.isfinite(self.min_film_thickness) and self.min_film_thickness > 0):
             raise ValueError(f"min_film_thickness must be positive, got {self.min_film_thickness!r}")
+        if not (np.isfinite(self.max_barus_exponent) and 0 < self.max_barus_exponent <= 80):
+            raise ValueError(f"max_barus_exponent must lie in (0, 80], got {self.max_barus_exponent!r}")
         if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
             raise ValueError(f"limiting_shear must be positive or None, got {self.limiting_shear!r}")
 
@@ -148,7 +159,10 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
                                           params.effective_modulus, lubricant)
         h[idx] = np.maximum(h_c, law.min_film_thickness)
         # spin still shapes the local slip field when its moment is switched off
-        tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_max[idx], h[idx],
+        p_traction = p_max[idx]
+        if lubricant.pressure_viscosity > 0:
+            p_traction = np.minimum(p_traction, law.max_barus_exponent / lubricant.pressure_viscosity)
+        tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction, h[idx],
                             lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear,
                             fast=law.fast_quadrature)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat

@@ -1071,8 +1071,14 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
         shape, (ux, uy, om, a, b, pm, hh) = flat
         eta_t = np.full(ux.shape[0], eta0)
     if fast:
-        res = _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives,
-                          lam_s)  # (4 or 13, n), rows contiguous
+        with np.errstate(over="ignore", invalid="ignore"):
+            res = _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives,
+                              lam_s)  # (4 or 13, n), rows contiguous
+        bad = ~np.all(np.isfinite(res), axis=0)
+        if bad.any():  # float32 overflow (extreme slip at high pressure): redo in float64
+            i = np.flatnonzero(bad)
+            res[:, i] = _accurate_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i], c_p, c1_coef,
+                                        order, derivatives, lam_s).T
     else:
         res = _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order,
                               derivatives, lam_s).T.copy()

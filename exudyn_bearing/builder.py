@@ -103,9 +103,14 @@ def _check_frame(position, rotation):
 
 
 def _check_force(name, value):
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
-        raise ValueError(f"{name} must be a finite non-negative force in N, got {value!r}")
-    return float(value)
+    """A constant force (N) or a function of time t in s returning N, as a function of t."""
+    at_start = value(0.0) if callable(value) else value
+    if not (isinstance(at_start, (int, float, np.floating, np.integer)) and math.isfinite(at_start) and at_start >= 0):
+        raise ValueError(f"{name} must be a finite non-negative force in N (or a function of time returning one), "
+                         f"got {at_start!r}")
+    if callable(value):
+        return value
+    return lambda t, v=float(value): v
 
 
 def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT,
@@ -127,10 +132,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     lubricant : contact.lubricant.Lubricant
     innerRace, outerRace : Race
         See :mod:`exudyn_bearing.races`; defaults ``Driven(1800 rpm)`` and ``Fixed()``.
-    axialForce, radialForce : float
-        Constant forces on the inner race (a ``Driven``/``Free`` race body), N: axial
-        along +bearing axis (loading the inner contacts), radial along the bearing frame's
-        first axis.
+    axialForce, radialForce : float or callable
+        Forces on the inner race (a ``Driven``/``Free`` race body), N, constant or a
+        function of time t in s (load steps, gusts): axial along +bearing axis (loading the
+        inner contacts), radial along the bearing frame's first axis. The initial state
+        balances the values at t = 0.
     position, rotationMatrix
         Bearing frame in global coordinates; its third column is the bearing axis.
     contactLaw : contact.ballrace.ContactLaw
@@ -173,8 +179,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     for name, race in (("innerRace", inner), ("outerRace", outer)):
         if not isinstance(race, Race):
             raise ValueError(f"{name} must be a races.Race, got {race!r}")
-    axial, radial = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
-    loaded = bool(axial or radial)
+    axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
+    axial, radial = float(axial_of_t(0.0)), float(radial_of_t(0.0))
+    loaded = bool(axial or radial) or callable(axialForce) or callable(radialForce)
     if loaded and (inner.kind not in ("driven", "free") or inner.fixed_translation):
         raise ValueError("axialForce/radialForce act on a Driven or Free inner race with free translation; "
                          "with other mounts load the body the race sits on")
@@ -252,7 +259,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         layout["cage"] = len(nodes)
         nodes.append(cage_node)
     race_items = {"inner": (None, None), "outer": (None, None)}
-    race_frames, held = {}, {}
+    race_frames, held, driven = {}, {}, {}
     for name, race, shift in (("inner", inner, relative[:3]), ("outer", outer, np.zeros(3))):
         if race.kind == "fixed":
             continue
@@ -270,6 +277,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             race_frames[name] = (np.zeros(3), np.eye(3))
             if race.kind == "driven":
                 held[len(nodes)] = "all" if race.fixed_translation else "rotation"
+                if callable(race.rpm):
+                    driven[len(nodes)] = (race, i_a)
         race_items[name] = (body, node)
         layout[name] = len(nodes)
         nodes.append(node)
@@ -278,7 +287,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             raise ValueError(f"node {node} must be a NodeRigidBodyRotVecLG (create the body with "
                              "nodeType=exu.NodeType.RotationRotationVector)")
     connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
-                                 layout, origin, frame, race_frames, frame @ np.array([radial, 0.0, axial]), held)
+                                 layout, origin, frame, race_frames,
+                                 lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven)
     connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
                                           for n in nodes])
     ref = connector.reference

@@ -108,24 +108,37 @@ class BearingConnector:
     race_frames : dict
         Per race with a node: (local position, local rotation) of the race frame in the
         node's body frame.
-    applied_force : ndarray, (3,)
-        Global force on the inner race node (e.g. the axial and radial load), N.
+    applied_force : ndarray (3,) or callable
+        Global force on the inner race node (e.g. the axial and radial load), N, or a
+        function of time t returning it.
     held : dict
         Per race slot: which generalized-force components to drop so the race keeps its
         initial velocity ('rotation' or 'all').
+    driven : dict, optional
+        Per held race slot with a time-varying speed: (Race, axial moment of inertia in
+        kg m²). Its axial torque is I (dw/dt + (w_ref - w)/tau), tau = 1 ms: the
+        feed-forward makes the race follow the prescribed speed, the weak feedback removes
+        integration drift.
     """
+
+    speed_tracking_time = 1e-3  #: tau of the driven-speed feedback, s
 
     def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
                  drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
-                 race_frames: dict, applied_force, held: dict):
+                 race_frames: dict, applied_force, held: dict, driven: dict | None = None):
         self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
         self.races, self.layout = races, layout
         self.origin = np.asarray(frame_origin, dtype=float)
         self.rotation = np.asarray(frame_rotation, dtype=float)
         self.axis = self.rotation[:, 2]
         self.race_frames = race_frames
-        self.applied_force = np.asarray(applied_force, dtype=float)
+        if callable(applied_force):
+            self.applied_force = applied_force
+        else:
+            constant = np.asarray(applied_force, dtype=float)
+            self.applied_force = lambda t: constant
         self.held = held
+        self.driven = driven or {}
         self.z = bearing.balls
         self.n_nodes = 1 + max(s for s in [*layout["balls"], layout["cage"], layout["inner"], layout["outer"]]
                                if s is not None)
@@ -273,7 +286,7 @@ class BearingConnector:
         force[:, balls] += f_con.sum(axis=1) + cage_force + drag_force
         torque[:, balls] += m_con.sum(axis=1)
         if self.layout["inner"] is not None:
-            force[:, self.layout["inner"]] += self.applied_force
+            force[:, self.layout["inner"]] += self.applied_force(t)
         out = np.empty((bsz, n_nodes, 6))
         out[..., :3] = force
         out[..., 3:] = np.einsum("bnji,bnj->bni", rot, torque)  # A^T tau: local-omega coordinates
@@ -286,7 +299,34 @@ class BearingConnector:
             if what == "all":
                 out[:, slot, :3] = 0.0
                 react[:, :, slot, :3] = 0.0
+        for slot, (race, inertia) in self.driven.items():
+            dt = 1e-6
+            w_ref = race.speed(t)
+            accel = (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt)
+            w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
+            out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
         return out, react, (kin_all, frc_all, cage_force, drag_force)
+
+    def diagnose(self, t, q, q_t) -> str:
+        """The most demanding contact of a (finite) state, as a sentence for error messages:
+        the heaviest ball–race contact with its load, p_max, Barus exponent c_etaP p_max
+        (MODEL.md §6, §10: the traction stiffness grows like its exponential) and the largest
+        spin moment."""
+        try:
+            s = self.evaluate(t, q, q_t, details=True)
+        except Exception as err:  # a diagnosis must never mask the original failure
+            return f"(state not evaluable: {err})"
+        loads = np.concatenate([s.inner_forces.normal_load, s.outer_forces.normal_load])
+        if not np.all(np.isfinite(loads)):
+            return "non-finite contact loads"
+        k = int(np.argmax(loads))
+        race, ball = ("inner", "outer")[k // self.z], k % self.z
+        f = s.inner_forces if race == "inner" else s.outer_forces
+        p_max = float(f.max_pressure[ball])
+        mz = np.abs(np.concatenate([s.inner_forces.spin_moment, s.outer_forces.spin_moment]))
+        return (f"t = {t:.6g} s: heaviest contact {race} race / ball {ball}: Q = {loads[k]:.4g} N, "
+                f"p_max = {p_max / 1e9:.3g} GPa, Barus exponent c_etaP p_max = "
+                f"{self.lubricant.pressure_viscosity * p_max:.3g}; largest spin moment {mz.max():.3g} N m")
 
     def _non_finite(self, t, pos, vel, omega) -> str:
         """Where the state first became non-finite, as a sentence."""

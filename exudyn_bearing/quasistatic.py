@@ -184,7 +184,8 @@ class _Geometric:
             res, con = self.ball_residual(offsets, x)
             scale = np.maximum(np.maximum(con["inner"]["load"], con["outer"]["load"]), self.fc) + 1e-300
             norm = np.linalg.norm(res, axis=1)
-            active = norm > tol * np.maximum(scale, 1.0)  # floor: 1e-10 N for (nearly) unloaded balls
+            # all balls share the rounding floor of the heaviest one (positions ~1e-17 m)
+            active = norm > tol * max(float(scale.max()), 1.0)
             if not np.any(active):
                 return offsets, con, it
             jac = self.ball_jacobian(con)
@@ -226,6 +227,16 @@ class _Geometric:
         return f.sum(axis=0), np.cross(points, f).sum(axis=0)
 
 
+def _radial_hint(axial, radial, alpha, hold_axial) -> str:
+    """Why a single-row angular-contact bearing may have no equilibrium: a radial load
+    induces an axial force ~1.25 F_r tan(a) that the axial load must hold."""
+    if hold_axial or radial <= 0 or axial >= 1.25 * radial * math.tan(alpha):
+        return ""
+    return (f"; radial={radial:g} N needs about axial >= 1.25 radial tan(a0) = "
+            f"{1.25 * radial * math.tan(alpha):.0f} N on a single angular-contact bearing "
+            f"(axial={axial:g} N): the radial load's induced axial force pushes the races apart")
+
+
 def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, method, tol, max_iter):
     """Paper P4–P6 with fixed contact angle a0 (translations only)."""
     z, alpha = bearing.balls, bearing.contact_angle
@@ -261,7 +272,8 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
         try:
             step = np.linalg.solve(jac[np.ix_(free, free)], -res[free])
         except np.linalg.LinAlgError:
-            raise QuasiStaticError("fixed-angle solve: no ball in contact (singular Jacobian)") from None
+            raise QuasiStaticError("fixed-angle solve: no ball in contact (singular Jacobian)"
+                                   + _radial_hint(axial, radial, alpha, hold_axial)) from None
         lam, norm0 = 1.0, np.linalg.norm(res[free])
         for _ in range(40):
             trial = x.copy()
@@ -272,7 +284,8 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
         x = trial
     else:
         raise QuasiStaticError(f"fixed-angle Newton–Raphson did not converge in {max_iter} iterations "
-                               f"(residual {np.linalg.norm(res[free]):.3g} N)")
+                               f"(residual {np.linalg.norm(res[free]):.3g} N)"
+                               + _radial_hint(axial, radial, alpha, hold_axial))
     res, jac, q, delta = residual(x)
     q_inner = np.where(q > 0, q - fc_line, 0.0)
     q_outer = np.where(q > 0, q + fc_line, 0.0)

@@ -7,8 +7,9 @@ Use the factory functions:
     axis at ``rpm`` (a number or a function of time t in s returning rpm). Ground-fixed
     outer race, or a speed-driven race whose shaft is held in place.
 ``Driven(rpm, translation='free')``
-    A new rigid body whose rotation is held at ``rpm`` (any solver) and whose translation
-    is free (loaded by the bearing's applied forces) or ``'fixed'``.
+    A new rigid body whose rotation is held at ``rpm`` (a number, or a function of time t
+    in s returning rpm, e.g. a run-up ramp; any solver) and whose translation is free
+    (loaded by the bearing's applied forces) or ``'fixed'``.
 ``Free(rpm=0)``
     A new, unconstrained rigid body (initial speed ``rpm``).
 ``OnBody(bodyNumber, localPosition, localRotation)``
@@ -47,8 +48,8 @@ class Race:
             raise ValueError(f"kind must be 'fixed', 'driven', 'free' or 'body', got {self.kind!r}")
         if not callable(self.rpm) and not (isinstance(self.rpm, (int, float)) and math.isfinite(self.rpm)):
             raise ValueError(f"rpm must be a finite number or a function of time, got {self.rpm!r}")
-        if callable(self.rpm) and self.kind != "fixed":
-            raise ValueError("rpm: a time-varying speed needs a Fixed (kinematic) race")
+        if callable(self.rpm) and self.kind not in ("fixed", "driven"):
+            raise ValueError("rpm: a time-varying speed needs a Fixed or Driven race")
         if self.mass is not None and not (math.isfinite(self.mass) and self.mass > 0):
             raise ValueError(f"mass must be positive, got {self.mass!r}")
         rot = np.asarray(self.local_rotation, dtype=float)
@@ -70,9 +71,9 @@ def Fixed(rpm=0.0) -> Race:
     return Race("fixed", rpm=rpm)
 
 
-def Driven(rpm: float, translation: str = "free", mass: float | None = None, inertia=None) -> Race:
-    """New race body turning at a held ``rpm``; ``translation`` 'free' (loaded by the
-    bearing's applied forces) or 'fixed'."""
+def Driven(rpm, translation: str = "free", mass: float | None = None, inertia=None) -> Race:
+    """New race body turning at a held ``rpm`` (number or function of t in s);
+    ``translation`` 'free' (loaded by the bearing's applied forces) or 'fixed'."""
     if translation not in ("free", "fixed"):
         raise ValueError(f"translation must be 'free' or 'fixed', got {translation!r}")
     return Race("driven", rpm=rpm, fixed_translation=translation == "fixed", mass=mass, inertia=inertia)

@@ -114,9 +114,31 @@ def _exudyn_settings(settings: SolverSettings, end_time: float):
     return s
 
 
-def _where(handles) -> str:
+def _where(handles, mbs=None) -> str:
+    """Where a failed run went wrong: the first non-finite state if there was one, else
+    the most demanding contact of the last state."""
     found = [h.connector.first_non_finite for h in handles if h.connector.first_non_finite]
-    return f" ({found[0]})" if found else ""
+    if found:
+        return f" ({found[0]})"
+    if mbs is None:
+        return ""
+    try:
+        q = np.asarray(mbs.systemData.GetODE2Coordinates())
+        q_t = np.asarray(mbs.systemData.GetODE2Coordinates_t())
+        t = float(mbs.systemData.GetTime())
+    except Exception:  # noqa: BLE001 - diagnosis is best effort
+        return ""
+    parts = []
+    for h in handles:
+        idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6)
+                              for n in h.nodeNumbers])
+        parts.append(h.connector.diagnose(t, q[idx] + h.connector.reference, q_t[idx]))
+    return " (" + "; ".join(parts) + ")"
+
+
+_ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this step. Use a smaller step "
+           "(SolverSettings(step=...)), a limiting shear stress (ContactLaw(limiting_shear=0.07)), or check "
+           "that the load is within the bearing's capacity")
 
 
 def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverSettings()) -> RunInfo:
@@ -143,8 +165,9 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
                               showCausingItems=False)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
-        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s{_where(handles)}: "
-                                     f"{err}") from err
+        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s"
+                                     f"{_where(handles, mbs)}: {err}"
+                                     + (_ADVICE if settings.implicit and not _where(handles) else "")) from err
     finally:
         exu.config.printToConsole = printing
     wall = _time.perf_counter() - start
@@ -154,7 +177,7 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
                    getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None))
     if not ok:
         raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
-                                     f"{_where(handles)}; try a smaller step or generalized-alpha")
+                                     f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not np.all(np.isfinite(q)) or not np.all(np.isfinite(mbs.systemData.GetODE2Coordinates_t())):
         raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles)}: "
