@@ -150,7 +150,9 @@ def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_s
     """
     c = np.asarray(ball_centre, dtype=float)
     e = np.asarray(spin_axis, dtype=float)
-    e = e / np.linalg.norm(e, axis=-1, keepdims=True)
+    norm = np.linalg.norm(e, axis=-1, keepdims=True)
+    # a ball at rest has no spin axis; any axis gives W = 0 there, take the bearing axis
+    e = np.where(norm > 0, e / np.where(norm > 0, norm, 1.0), [0.0, 0.0, 1.0])
     r_c = np.hypot(c[:, 0], c[:, 1])
     t1 = np.stack([-c[:, 1], c[:, 0], np.zeros(len(c))], axis=1) / r_c[:, None]
     rows = []

@@ -122,6 +122,8 @@ class BearingConnector:
     """
 
     speed_tracking_time = 1e-3  #: tau of the driven-speed feedback, s
+    #: largest admissible elastic approach, fraction of D (the 100 kN case reaches ~0.3 %)
+    max_penetration = 0.02
 
     def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
                  drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
@@ -217,6 +219,19 @@ class BearingConnector:
             return (nan.reshape(-1, 6), np.full((self.z, self.n_nodes, 6), 0.0)) if split else nan
         out, react, parts = self._batch_forces(t, pos[None], rot[None], vel[None], omega[None])
         out, react = out[0], react[0]
+        deepest = int(np.argmax(parts[0].penetration))
+        if parts[0].penetration[deepest] > self.max_penetration * self.bearing.ball_diameter:
+            # Hertz theory and the groove geometry are meaningless here: reject the state
+            # like a blown-up one (a trial iterate may recover with a smaller step)
+            if self.first_non_finite is None:
+                race, ball = ("inner", "outer")[deepest // self.z], deepest % self.z
+                self.first_non_finite = (
+                    f"t = {t:.6g} s: ball {ball} pushed out of its groove at the {race} race: elastic approach "
+                    f"{parts[0].penetration[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the ball "
+                    f"diameter (Q = {parts[1].normal_load[deepest]:.4g} N); the load is beyond what the bearing "
+                    "can carry")
+            nan = np.full(6 * self.n_nodes, np.nan)
+            return (nan.reshape(-1, 6), np.zeros((self.z, self.n_nodes, 6))) if split else nan
         if split:
             return out, react
         out = out + react.sum(axis=0)

@@ -115,25 +115,23 @@ def _exudyn_settings(settings: SolverSettings, end_time: float):
 
 
 def _where(handles, mbs=None) -> str:
-    """Where a failed run went wrong: the first non-finite state if there was one, else
-    the most demanding contact of the last state."""
-    found = [h.connector.first_non_finite for h in handles if h.connector.first_non_finite]
-    if found:
-        return f" ({found[0]})"
-    if mbs is None:
-        return ""
-    try:
-        q = np.asarray(mbs.systemData.GetODE2Coordinates())
-        q_t = np.asarray(mbs.systemData.GetODE2Coordinates_t())
-        t = float(mbs.systemData.GetTime())
-    except Exception:  # noqa: BLE001 - diagnosis is best effort
-        return ""
+    """Where a failed run went wrong: the most demanding contact of the last state and the
+    first rejected (non-finite or out-of-groove) state, if any."""
     parts = []
-    for h in handles:
-        idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6)
-                              for n in h.nodeNumbers])
-        parts.append(h.connector.diagnose(t, q[idx] + h.connector.reference, q_t[idx]))
-    return " (" + "; ".join(parts) + ")"
+    if mbs is not None:
+        try:
+            q = np.asarray(mbs.systemData.GetODE2Coordinates())
+            q_t = np.asarray(mbs.systemData.GetODE2Coordinates_t())
+            t = float(mbs.systemData.GetTime())
+            for h in handles:
+                idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6)
+                                      for n in h.nodeNumbers])
+                if np.all(np.isfinite(q[idx])) and np.all(np.isfinite(q_t[idx])):
+                    parts.append("last state: " + h.connector.diagnose(t, q[idx] + h.connector.reference, q_t[idx]))
+        except Exception:  # noqa: BLE001 - diagnosis is best effort, never masks the failure
+            pass
+    parts += ["first rejected state: " + h.connector.first_non_finite for h in handles if h.connector.first_non_finite]
+    return " (" + "; ".join(parts) + ")" if parts else ""
 
 
 _ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this step. Use a smaller step "
@@ -167,7 +165,7 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
     except Exception as err:  # Exudyn raises on Newton failure or NaN
         raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s"
                                      f"{_where(handles, mbs)}: {err}"
-                                     + (_ADVICE if settings.implicit and not _where(handles) else "")) from err
+                                     + (_ADVICE if settings.implicit else "")) from err
     finally:
         exu.config.printToConsole = printing
     wall = _time.perf_counter() - start
