@@ -58,7 +58,7 @@ def _simulate(args) -> int:
     settings = SolverSettings(solver=args.solver, step=args.step, output_step=max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
-                       contact_law=ContactLaw(quadrature_order=args.order))
+                       contact_law=ContactLaw(quadrature_order=args.order), error_estimate=args.error_estimate)
     data = summary.to_dict()
     if args.json:
         json.dump(data, sys.stdout, indent=1)
@@ -74,7 +74,14 @@ def _simulate(args) -> int:
     d = data["details"]
     print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
     print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
-          f"{data['newton_iterations']} Newton iterations, wall time {data['wall_time_s']:.1f} s")
+          f"{data['newton_iterations']} Newton iterations, {data['jacobian_updates']} Jacobian updates, "
+          f"wall time {data['wall_time_s']:.1f} s")
+    est = data.get("error_estimate")
+    if est:
+        print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")
+        print(f"    cage slip {est['cage_slip_percent']:.3g} pp, kinematic cage slip "
+              f"{est['kinematic_cage_slip_percent']:.3g} pp, cage speed {est['cage_speed']:.3g} rad/s, "
+              f"max inner load {est['max_inner_load']:.3g} N")
     return 0
 
 
@@ -130,6 +137,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
     p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("--error-estimate", action="store_true",
+                   help="repeat at half the step and report the differences as an error estimate")
     p.set_defaults(func=_simulate)
 
     from . import skidmap
