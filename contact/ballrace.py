@@ -17,7 +17,7 @@ from .lubricant import Lubricant
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS"]
 
-TRACTION_MODELS = ("crook", "none")
+TRACTION_MODELS = ("crook", "newtonian", "coulomb", "none")
 
 
 @dataclass(frozen=True)
@@ -56,8 +56,11 @@ class ContactLaw:
 
     Parameters
     ----------
-    traction : {'crook', 'none'}
-        Crook thermal EHD traction (MODEL.md §6) or normal forces only.
+    traction : {'crook', 'newtonian', 'coulomb', 'none'}
+        Crook thermal EHD traction (MODEL.md §6, the paper's model), its isothermal
+        Newtonian limit (:func:`contact.traction.newtonian_traction`, small slip only),
+        regularized dry Coulomb friction (:func:`contact.friction.coulomb_traction`), or
+        normal forces only. Models not chosen cost nothing.
     spin_moment : bool
         Apply the traction spin moment M_z (P16).
     quadrature_order : int
@@ -76,6 +79,8 @@ class ContactLaw:
     limiting_shear : float or None
         Limiting shear-stress coefficient Lambda (tau <= Lambda p); None: off (paper).
     hertz_method : {'fit', 'exact'}
+    friction_coefficient, friction_regularization : float
+        μ and the slip speed u_r (m/s) that smooths stick–slip, for ``traction='coulomb'``.
     max_barus_exponent : float
         Bound on the Barus exponent c_etaP p of the traction viscosity (MODEL.md §6): the
         traction is evaluated with p_max <= max_barus_exponent / c_etaP (3.4 GPa for the
@@ -95,6 +100,8 @@ class ContactLaw:
     limiting_shear: float | None = None
     hertz_method: str = "fit"
     max_barus_exponent: float = 60.0
+    friction_coefficient: float = 0.05
+    friction_regularization: float = 1e-3
 
     def __post_init__(self) -> None:
         if self.traction not in TRACTION_MODELS:
@@ -105,6 +112,9 @@ class ContactLaw:
             raise ValueError(f"damping_ratio must be >= 0, got {self.damping_ratio!r}")
         if not (np.isfinite(self.min_film_thickness) and self.min_film_thickness > 0):
             raise ValueError(f"min_film_thickness must be positive, got {self.min_film_thickness!r}")
+        for name in ("friction_coefficient", "friction_regularization"):
+            if not (np.isfinite(getattr(self, name)) and getattr(self, name) > 0):
+                raise ValueError(f"{name} must be positive, got {getattr(self, name)!r}")
         if not (np.isfinite(self.max_barus_exponent) and 0 < self.max_barus_exponent <= 80):
             raise ValueError(f"max_barus_exponent must lie in (0, 80], got {self.max_barus_exponent!r}")
         if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
@@ -149,8 +159,18 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     h = np.zeros(n_con)
     p_max = contact.max_pressure(load)
     loaded = load > 0
-    if law.traction == "crook" and np.any(loaded):
-        from .traction import crook_traction
+    if law.traction == "coulomb" and np.any(loaded):
+        from .friction import coulomb_traction
+
+        idx = np.flatnonzero(loaded)
+        a, b = contact.semi_axes(load)
+        tr = coulomb_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a[idx], b[idx],
+                              load[idx], law.friction_coefficient, law.friction_regularization)
+        fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
+        if law.spin_moment:
+            mz[idx] = tr.mz
+    elif law.traction in ("crook", "newtonian") and np.any(loaded):
+        from .traction import crook_traction, newtonian_traction
 
         idx = np.flatnonzero(loaded)
         a, b = contact.semi_axes(load)
@@ -162,9 +182,13 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         p_traction = p_max[idx]
         if lubricant.pressure_viscosity > 0:
             p_traction = np.minimum(p_traction, law.max_barus_exponent / lubricant.pressure_viscosity)
-        tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction, h[idx],
-                            lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear,
-                            fast=law.fast_quadrature)
+        if law.traction == "newtonian":
+            tr = newtonian_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
+                                    h[idx], lubricant)
+        else:
+            tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
+                                h[idx], lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear,
+                                fast=law.fast_quadrature)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz
