@@ -107,6 +107,15 @@ def _skid_map(args) -> int:
     return 0
 
 
+def _render(args) -> int:
+    from .graphics import render_run
+
+    files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
+                       frames=args.frames, backend=args.backend)
+    print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
                                      description="Skidding analysis of angular-contact ball bearings with Exudyn.")
@@ -140,6 +149,16 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")
     p.set_defaults(func=_simulate)
+    p = sub.add_parser("render", help="render a run to PNG frames (headless: Xvfb/OpenGL or the raytracer)")
+    p.add_argument("--axial", type=float, default=1300.0, help="axial force on the inner race, N")
+    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min")
+    p.add_argument("--time", type=float, default=0.002, help="simulated time, s")
+    p.add_argument("--frames", type=int, default=4, help="number of frames spread over the run")
+    p.add_argument("--backend", choices=("auto", "opengl", "raytracer"), default="auto",
+                   help="auto: OpenGL with an X display (e.g. xvfb-run), else the raytracer")
+    p.add_argument("--out", required=True, help="output directory")
+    p.set_defaults(func=_render)
 
     from . import skidmap
 
