@@ -237,22 +237,21 @@ class BearingConnector:
         out = out + react.sum(axis=0)
         if not details:
             return out.ravel()
-        kin_all, frc_all, cage_force, drag_force = parts
+        kin_all, frc_all, cage_force, drag_force, race_omega = parts
         z = self.z
         halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
         cage_slot = self.layout["cage"]
         balls = self.layout["balls"]
         return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
                               cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
-                              self._race_frame("inner", t, pos[None], vel[None], rot[None], omega[None])[3][0],
-                              self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])[3][0],
+                              race_omega["inner"][0], race_omega["outer"][0],
                               self.rotation, self.origin, out.ravel())
 
     def _batch_forces(self, t, pos, rot, vel, omega):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
         to the race/cage slots (B, Z, n_nodes, 6), and (kinematics, forces, cage force,
-        drag force) of all B 2Z contacts. One vectorized evaluation of all contacts."""
+        drag force, race angular velocities) of all B 2Z contacts. One vectorized evaluation of all contacts."""
         bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
         balls = self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
@@ -320,7 +319,8 @@ class BearingConnector:
             accel = (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt)
             w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
             out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
-        return out, react, (kin_all, frc_all, cage_force, drag_force)
+        return out, react, (kin_all, frc_all, cage_force, drag_force,
+                            {name: fr[3] for name, fr in frames.items()})
 
     def diagnose(self, t, q, q_t) -> str:
         """The most demanding contact of a (finite) state, as a sentence for error messages:
