@@ -80,28 +80,13 @@ def main():
     (out / "axial_skidding.md").write_text(text + "\n")
     (out / "axial_skidding.json").write_text(json.dumps(rows, indent=1))
     try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not installed (pip install -e .[plot]): no plot")
+        from exudyn_bearing.plots import plot_skid_curve
+        plot_skid_curve(loads, kin, p19, [r["attitude_xz_deg"] for r in rows], [r["attitude_yz_deg"] for r in rows],
+                        [r["settled"] for r in rows], path=out / "axial_skidding.png",
+                        title="Reference bearing, 1800 rpm")
+    except ImportError as err:
+        print(f"{err}: no plot")
         return
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
-    ax1.plot(loads, kin, "o-", label="kinematic cage slip (MODEL.md §7)")
-    ax1.plot(loads, p19, "s--", label="cage slip P19 (nominal 40°)")
-    ax1.axhline(1.0, color="grey", lw=0.8)
-    ax1.set(xlabel="axial load (N)", ylabel="cage slip (%)", title="Reference bearing, 1800 rpm")
-    ax1.legend()
-    ax2.plot(loads, [r["attitude_xz_deg"] for r in rows], "o-", label="β_XZ")
-    ax2.plot(loads, [r["attitude_yz_deg"] for r in rows], "s-", label="β_YZ")
-    ax2.set(xlabel="axial load (N)", ylabel="ball attitude angle (deg)")
-    ax2.legend()
-    for ax in (ax1, ax2):
-        for r in rows:
-            if not r["settled"]:
-                ax.axvline(r["axial_N"], color="red", alpha=0.15)
-    fig.tight_layout()
-    fig.savefig(out / "axial_skidding.png", dpi=120)
     print(f"wrote {out}/axial_skidding.png")
 
 

@@ -189,17 +189,21 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     axis = frame[:, 2]
 
     # -- initial configuration from the quasi-static solution ----------------------------
-    w_i, w_o = inner.speed(0.0), outer.speed(0.0)
-    rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
+    speed = {"inner": inner.speed(0.0), "outer": outer.speed(0.0)}
     relative = np.zeros(5)
-    for race, sign in ((inner, 1.0), (outer, -1.0)):
+    for name, race, sign in (("inner", inner, 1.0), ("outer", outer, -1.0)):
         if race.kind == "body":
             node = mbs.GetObject(race.body)["nodeNumber"]
             ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
             init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
+            init_t = np.asarray(mbs.GetNodeParameter(node, "initialVelocities"), dtype=float)
             pos_node = ref[:3] + init[:3]
-            race_origin = pos_node + _rotvec_matrix(ref[3:] + init[3:]) @ np.asarray(race.local_position)
+            rot_node = _rotvec_matrix(ref[3:] + init[3:])
+            race_origin = pos_node + rot_node @ np.asarray(race.local_position)
             relative[:3] += sign * frame.T @ (race_origin - origin)
+            speed[name] = float(axis @ (rot_node @ init_t[3:]))  # velocity coordinates: local omega
+    w_i, w_o = speed["inner"], speed["outer"]
+    rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
     if innerRaceDisplacement is not None:
         shift = np.asarray(innerRaceDisplacement, dtype=float)
         if shift.shape != (3,) or not np.all(np.isfinite(shift)):

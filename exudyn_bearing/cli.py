@@ -60,6 +60,11 @@ def _simulate(args) -> int:
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
                        contact_law=ContactLaw(quadrature_order=args.order), error_estimate=args.error_estimate)
     data = summary.to_dict()
+    if args.plot:
+        from .plots import plot_run
+
+        plot_run(summary.results, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm")
+        data["plot"] = str(args.plot)
     if args.json:
         json.dump(data, sys.stdout, indent=1)
         print()
@@ -82,6 +87,8 @@ def _simulate(args) -> int:
         print(f"    cage slip {est['cage_slip_percent']:.3g} pp, kinematic cage slip "
               f"{est['kinematic_cage_slip_percent']:.3g} pp, cage speed {est['cage_speed']:.3g} rad/s, "
               f"max inner load {est['max_inner_load']:.3g} N")
+    if args.plot:
+        print(f"  plots written to {args.plot}")
     return 0
 
 
@@ -148,6 +155,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")
+    p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
     p.set_defaults(func=_simulate)
     p = sub.add_parser("render", help="render a run to PNG frames (headless: Xvfb/OpenGL or the raytracer)")
     p.add_argument("--axial", type=float, default=1300.0, help="axial force on the inner race, N")

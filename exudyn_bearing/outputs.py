@@ -59,6 +59,12 @@ class BearingResults:
     attitude_xz: np.ndarray  #: beta_XZ = asin(|w_y|/|w|), (T, Z)
     inner: dict  #: per-contact arrays (T, Z): load, contact_angle, slip_rolling, slip_transverse, slip, spin, film, traction_rolling, traction_transverse, spin_moment, heat, max_pressure
     outer: dict
+    #: force all balls apply to the inner race (normal + traction), bearing frame, (T, 3), N
+    inner_race_force: np.ndarray = None
+    #: their moment about the bearing centre, bearing frame, (T, 3), N m
+    inner_race_moment: np.ndarray = None
+    #: force all balls apply to the outer race (the housing reaction), bearing frame, (T, 3), N
+    outer_race_force: np.ndarray = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -106,6 +112,8 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     per_ball = {name: np.zeros((steps, z)) for name in ("psi", "orbit", "kin", "byz", "bxz")}
     w_orb = np.zeros((steps, z, 3))
     contacts = {race: {f: np.zeros((steps, z)) for f in _CONTACT_FIELDS} for race in ("inner", "outer")}
+    race_force = {race: np.zeros((steps, 3)) for race in ("inner", "outer")}
+    inner_moment = np.zeros((steps, 3))
     for k in range(steps):
         s = con.evaluate(time[k], q[k], q_t[k], details=True)
         rel = (s.ball_position - origin) @ frame  # bearing frame
@@ -131,7 +139,12 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
             surface.append(np.einsum("ij,ij->i", v_ball_p, kin.rolling) + kin.slip_rolling)
         p_in, p_out = (s.inner.point - origin) @ frame, (s.outer.point - origin) @ frame
         per_ball["kin"][k] = rolling_cage_speed(rel, omega, p_in, p_out, w_i, w_o, surface_speeds=surface)
+        # a race receives -F at each contact point and -M_z n: about the bearing centre o that
+        # is -[(c - o) x F + (moment on the ball about its centre)]
+        inner_moment[k] = -np.sum(cross(s.ball_position - origin, s.inner_forces.force) + s.inner_forces.moment,
+                                  axis=0) @ frame
         for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
+            race_force[race][k] = -f.force.sum(axis=0) @ frame
             c = contacts[race]
             c["load"][k], c["contact_angle"][k] = f.normal_load, kin.contact_angle
             c["slip_rolling"][k], c["slip_transverse"][k] = kin.slip_rolling, kin.slip_transverse
@@ -144,4 +157,5 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     kin_slip = np.mean(cage_slip(per_ball["kin"], cage[:, None]), axis=1)
     return BearingResults(np.asarray(time), arrays["inner_speed"], arrays["outer_speed"], cage, nominal,
                           cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
-                          w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"])
+                          w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
+                          race_force["inner"], inner_moment, race_force["outer"])

@@ -59,6 +59,10 @@ class LoadDistribution:
     cage_force: np.ndarray  #: circumferential force the cage puts on each ball, N (along +psi)
     ball_residual: np.ndarray  #: |force balance of each ball| / (max contact load), -
     iterations: int
+    #: force the balls apply to the inner race, (F_x, F_y, F_z) in N, bearing frame
+    race_force: np.ndarray = None
+    #: their moment about the bearing centre, (M_x, M_y, M_z) in N m, bearing frame
+    race_moment: np.ndarray = None
 
     @property
     def max_load(self) -> float:
@@ -184,8 +188,10 @@ class _Geometric:
             res, con = self.ball_residual(offsets, x)
             scale = np.maximum(np.maximum(con["inner"]["load"], con["outer"]["load"]), self.fc) + 1e-300
             norm = np.linalg.norm(res, axis=1)
-            # all balls share the rounding floor of the heaviest one (positions ~1e-17 m)
-            active = norm > tol * max(float(scale.max()), 1.0)
+            # all balls share the rounding floor of the heaviest one: positions ~0.1 m round
+            # at ~2e-17 m, times a contact stiffness dQ/d(delta) of up to ~1e8 N/m that is
+            # ~2e-9 N however lightly the bearing is loaded
+            active = norm > tol * max(float(scale.max()), 100.0)
             if not np.any(active):
                 return offsets, con, it
             jac = self.ball_jacobian(con)
@@ -361,9 +367,13 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
                                                            hertz_method, tol, max_iter)
         alpha = np.full(z, bearing.contact_angle)
         zeros = np.zeros(z)
+        line = np.stack([np.cos(psi) * np.cos(alpha), np.sin(psi) * np.cos(alpha), np.sin(alpha)], axis=1)
+        force = -(qi[:, None] * line)  # the balls push the inner race back along their contact lines
+        points = bearing.pitch_radius * np.stack([np.cos(psi), np.sin(psi), zeros], axis=1)
         return LoadDistribution("fixed-angle", psi, qi, qo, alpha, alpha.copy(), np.where(qi > 0, di, delta),
                                 np.where(qo > 0, do, delta), zeros, zeros.copy(), x, np.zeros(2), np.zeros(2),
-                                centrifugal, cage, zeros.copy(), zeros.copy(), it)
+                                centrifugal, cage, zeros.copy(), zeros.copy(), it, force.sum(axis=0),
+                                np.cross(points, force).sum(axis=0))
 
     model = _Geometric(bearing, centrifugal, hertz_method)
     # start from the fixed-angle answer without centrifugal force
@@ -443,4 +453,5 @@ def _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, it):
     return LoadDistribution(
         "geometric", psi, con["inner"]["load"], con["outer"]["load"], con["inner"]["angle"], con["outer"]["angle"],
         con["inner"]["deflection"], con["outer"]["deflection"], offsets[:, 0].copy(), offsets[:, 1].copy(),
-        x[:3].copy(), x[3:].copy(), reaction, centrifugal, cage, cage_force, np.linalg.norm(res, axis=1) / q_scale, it)
+        x[:3].copy(), x[3:].copy(), reaction, centrifugal, cage, cage_force, np.linalg.norm(res, axis=1) / q_scale, it,
+        force, mom)
