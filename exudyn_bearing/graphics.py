@@ -184,7 +184,7 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
     vs = SC.visualizationSettings
     vs.general.autoFitScene = True
     vs.window.renderWindowSize = list(size)
-    vs.openGL.initialModelRotation = (np.eye(3)).tolist()
+    vs.openGL.advanced.initialModelRotation = (np.eye(3)).tolist()
     frames = steps if steps is not None else [None]
     written = []
     if backend == "opengl":

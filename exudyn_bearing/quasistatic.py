@@ -302,7 +302,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
                             *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
                             max_iter: int = 60, outer_rpm: float = 0.0,
-                            displacement=None) -> LoadDistribution:
+                            displacement=None, cage_speed: float | None = None) -> LoadDistribution:
     """Quasi-static load distribution (MODEL.md §4).
 
     Parameters
@@ -332,6 +332,10 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         Prescribe the inner-race displacement (m) and tilt (rad) instead of balancing
         the applied loads (geometric mode): only the balls are solved; the loads are
         then ignored.
+    cage_speed : float, optional
+        Cage (ball orbital) speed for the centrifugal force, rad/s, e.g. the one a dynamic
+        run measured; default: the nominal pure-rolling speed at ``rpm`` (P19, nominal
+        contact angle).
 
     Raises
     ------
@@ -355,7 +359,12 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     if axial == 0 and radial > 0 and not hold_axial and mode == "fixed-angle":
         raise ValueError("axial: with fixed contact angles an angular-contact bearing has no equilibrium under "
                          "radial load alone; give an axial force or hold_axial=True")
-    cage = bearing.cage_speed(rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0)
+    if cage_speed is None:
+        cage = bearing.cage_speed(rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0)
+    elif isinstance(cage_speed, (int, float, np.floating)) and math.isfinite(cage_speed):
+        cage = float(cage_speed)
+    else:
+        raise ValueError(f"cage_speed must be a finite angular speed in rad/s, got {cage_speed!r}")
     centrifugal = bearing.ball_mass * bearing.pitch_radius * cage ** 2
     z = bearing.balls
     psi = 2.0 * np.pi * np.arange(z) / z
