@@ -178,6 +178,16 @@ class BearingConnector:
         w = omega[:, slot]
         return origin, a @ rot_loc, vel[:, slot] + cross(w, origin - pos[:, slot]), w, slot
 
+    def race_frame(self, name, t, q, q_t):
+        """Origin (3,) in m and rotation (3, 3) of the ``'inner'`` or ``'outer'`` race frame
+        (third column: the race axis), global, for absolute coordinates q and velocities q_t."""
+        if name not in ("inner", "outer"):
+            raise ValueError(f"name must be 'inner' or 'outer', got {name!r}")
+        pos, rot, vel, wl = self.decode(q, q_t)
+        omega = np.einsum("nij,nj->ni", rot, wl)
+        origin, rotation, _, _, _ = self._race_frame(name, t, pos[None], vel[None], rot[None], omega[None])
+        return np.array(origin[0]), np.array(rotation[0])
+
     def _contact_params(self, batch: int):
         """Per-contact geometry arrays for ``batch`` states (cached: the Jacobian reuses one size)."""
         if batch not in self._params_cache:

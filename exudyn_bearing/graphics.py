@@ -106,13 +106,11 @@ def AddBearingGraphics(mbs, handle, *, races: bool = True, cage: bool = True, co
         q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=cfg))[indices]
         t = mbs_.systemData.GetTime(cfg)
         s = con.evaluate(t, q, q_t, details=True)
-        pos, rot, vel, wl = con.decode(q, q_t)
-        omega = np.einsum("nij,nj->ni", rot, wl)
+        pos, rot, _, _ = con.decode(q, q_t)
         out = []
         if races:
             for which in ("inner", "outer"):
-                origin, r, _, _, _ = con._race_frame(which, t, pos[None], vel[None], rot[None], omega[None])
-                origin, r = origin[0], r[0]
+                origin, r = con.race_frame(which, t, q, q_t)
                 out.append(graphics.SolidOfRevolution(pAxis=origin.tolist(), vAxis=r[:, 2].tolist(),
                                                       contour=[list(p) for p in contours[which]], color=grey,
                                                       nTiles=64))
@@ -183,7 +181,7 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
         raise ValueError(f"backend must be 'auto', 'opengl' or 'raytracer', got {backend!r}")
     vs = SC.visualizationSettings
     vs.general.autoFitScene = True
-    vs.window.renderWindowSize = list(size)
+    vs.view0.window.renderWindowSize = list(size)
     vs.openGL.advanced.initialModelRotation = (np.eye(3)).tolist()
     frames = steps if steps is not None else [None]
     written = []
