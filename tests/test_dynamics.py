@@ -276,7 +276,8 @@ def test_light_load_without_drag_pivots_gyroscopically():
     ball axes pivot towards the bearing axis (beta_XZ falls) and the spin this causes at
     both contacts must be paid for by rolling slip, even without drag. At 3 kN the ratio is
     below 1 and the axes stay (see test_kinematic_cage_slip_zero_without_drag).
-    Generalized-alpha 1e-4 s, 20 ms; observed beta_XZ 53 -> ~30 deg, slip ~10 %."""
+    Generalized-alpha 1e-4 s, 20 ms; observed: ratio 2.5, beta_XZ 14.1 -> 1.4 deg, kinematic
+    slip 10.4 % (3 kN: ratio 0.23, slip -0.002 %)."""
     _, mbs = _new_system()
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
                                          axialForce=200.0, ballDrag=None, show=False)
