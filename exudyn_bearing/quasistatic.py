@@ -293,7 +293,7 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
                                f"(residual {np.linalg.norm(res[free]):.3g} N)"
                                + _radial_hint(axial, radial, alpha, hold_axial))
     res, jac, q, delta = residual(x)
-    q_inner = np.where(q > 0, q - fc_line, 0.0)
+    q_inner = np.where(q > 0, np.maximum(q - fc_line, 0.0), 0.0)  # below fc_line the ball leaves the inner race
     q_outer = np.where(q > 0, q + fc_line, 0.0)
     return x, q_inner, q_outer, (q_inner / k_i) ** (2 / 3), (q_outer / k_o) ** (2 / 3), it, k_eff, delta
 
@@ -377,7 +377,10 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         alpha = np.full(z, bearing.contact_angle)
         zeros = np.zeros(z)
         line = np.stack([np.cos(psi) * np.cos(alpha), np.sin(psi) * np.cos(alpha), np.sin(alpha)], axis=1)
-        force = -(qi[:, None] * line)  # the balls push the inner race back along their contact lines
+        # P6's inner-race balance: every loaded ball pushes back with Q - 1/2 F_c cos(a0), which
+        # may be negative for light balls (the reported inner loads are clipped at 0)
+        balance = np.where(qo > 0, qo - centrifugal * math.cos(bearing.contact_angle), 0.0)
+        force = -(balance[:, None] * line)
         points = bearing.pitch_radius * np.stack([np.cos(psi), np.sin(psi), zeros], axis=1)
         return LoadDistribution("fixed-angle", psi, qi, qo, alpha, alpha.copy(), np.where(qi > 0, di, delta),
                                 np.where(qo > 0, do, delta), zeros, zeros.copy(), x, np.zeros(2), np.zeros(2),

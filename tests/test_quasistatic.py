@@ -137,6 +137,22 @@ def test_bad_input_and_no_equilibrium():
         solve_load_distribution(B, radial=1000, mode="fixed-angle")
     with pytest.raises(QuasiStaticError, match="did not converge"):
         solve_load_distribution(B, axial=1000, max_iter=1)
+    with pytest.raises(ValueError, match="cage_speed"):
+        solve_load_distribution(B, axial=1000, rpm=1800, cage_speed=float("inf"))
+
+
+@pytest.mark.parametrize("mode", ["geometric", "fixed-angle"])
+def test_race_force_balances_the_applied_load(mode):
+    """The balls' force on the inner race is minus the applied load (equilibrium); in the
+    geometric mode their moment is minus the reaction moment the shaft supplies; a given
+    cage speed of 0 is the no-centrifugal (0 rpm) solution."""
+    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800, mode=mode)
+    np.testing.assert_allclose(res.race_force, [-2000.0, 0.0, -2200.0], atol=1e-6 * 2200)
+    if mode == "geometric":
+        np.testing.assert_allclose(res.race_moment[:2], -res.reaction_moment, atol=1e-9)
+    still = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800, mode=mode, cage_speed=0.0)
+    rest = solve_load_distribution(B, axial=2200, radial=2000, rpm=0, mode=mode)
+    np.testing.assert_allclose(still.inner_load, rest.inner_load, rtol=1e-9, atol=1e-9)
 
 
 def test_cli_json():
