@@ -233,6 +233,18 @@ class _Geometric:
         return f.sum(axis=0), np.cross(points, f).sum(axis=0)
 
 
+def central_jacobian(fun, x, steps, dofs):
+    """Central-difference Jacobian of ``fun`` (vector -> vector) with respect to the entries
+    ``dofs`` of ``x``, perturbed by ``steps[dof]``; shape (len(fun(x)), len(dofs))."""
+    columns = []
+    for dof in dofs:
+        xp, xm = x.copy(), x.copy()
+        xp[dof] += steps[dof]
+        xm[dof] -= steps[dof]
+        columns.append((fun(xp) - fun(xm)) / (2 * steps[dof]))
+    return np.stack(columns, axis=1)
+
+
 def _radial_hint(axial, radial, alpha, hold_axial) -> str:
     """Why a single-row angular-contact bearing may have no equilibrium: a radial load
     induces an axial force ~1.25 F_r tan(a) that the axial load must hold."""
@@ -421,12 +433,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         history.append(float(np.linalg.norm(res)))
         if history[-1] < tol * scale:
             break
-        jac = np.empty((len(free), len(free)))
-        for col, dof in enumerate(free):
-            xp, xm = x.copy(), x.copy()
-            xp[dof] += steps[dof]
-            xm[dof] -= steps[dof]
-            jac[:, col] = (race_residual(xp)[0] - race_residual(xm)[0]) / (2 * steps[dof])
+        jac = central_jacobian(lambda xx: race_residual(xx)[0], x, steps, free)
         try:
             step = np.linalg.solve(jac, -res)
         except np.linalg.LinAlgError:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bearing import Bearing
-from .quasistatic import LoadDistribution, QuasiStaticError, _rotation, solve_load_distribution
+from .quasistatic import QuasiStaticError, _rotation, central_jacobian, solve_load_distribution
 
 __all__ = ["ShaftBearing", "ShaftEquilibrium", "solve_shaft"]
 
@@ -150,12 +150,7 @@ def solve_shaft(bearings, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0), rpm: float =
         scale = max(applied, float(np.linalg.norm(parts[1], axis=1).max()))
         if norm < tol * scale:
             break
-        jac = np.empty((5, 5))
-        for k in range(5):
-            xp, xm = x.copy(), x.copy()
-            xp[k] += steps[k]
-            xm[k] -= steps[k]
-            jac[:, k] = (residual(xp)[0] - residual(xm)[0]) / (2 * steps[k])
+        jac = central_jacobian(lambda xx: residual(xx)[0], x, steps, range(5))
         try:
             step = np.linalg.solve(jac, -res)
         except np.linalg.LinAlgError:
