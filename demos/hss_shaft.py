@@ -83,7 +83,7 @@ def build(mbs, rpm=1800.0, tangential=2000.0, preload=5e-6, ramp=0.01, show=Fals
 def compare(mbs, body, handles, loads, rpm, preload, fraction=0.25):
     """Shaft displacement, the displacement of each inner-race centre and the bearing
     reactions, means over the last ``fraction`` of the run, next to the quasi-static
-    shaft solution; returns a dict of both (um, mrad, N)."""
+    shaft solution; returns a dict of both (um, mrad, N) and each bearing's results."""
     from contact.kinematics import rotation_matrices
 
     force, moment = loads
@@ -96,10 +96,9 @@ def compare(mbs, body, handles, loads, rpm, preload, fraction=0.25):
     u = q[last, 6 * slot:6 * slot + 3]
     rot = rotation_matrices(q[last, 6 * slot + 3:6 * slot + 6])
     axis = rot[:, :, 2].mean(axis=0)  # spin-free: the shaft axis A e_z ~ (theta_y, -theta_x, 1)
-    reactions = []
-    for h in handles:
-        res = h.Results(mbs)
-        reactions.append(h.connector.rotation @ res.inner_race_force[res.last(fraction)].mean(axis=0))
+    results = [h.Results(mbs) for h in handles]
+    reactions = [h.connector.rotation @ res.inner_race_force[res.last(fraction)].mean(axis=0)
+                 for h, res in zip(handles, results)]
 
     def centre_shift(disp, rotation, b):  # inner-race centre minus its unloaded position, m
         p = np.asarray(b.inner_position)
@@ -114,6 +113,7 @@ def compare(mbs, body, handles, loads, rpm, preload, fraction=0.25):
                     "race_shift_um": [np.mean([centre_shift(ui, ri, b) for ui, ri in zip(u, rot)], axis=0) * 1e6
                                       for b in pair],
                     "reactions_N": reactions},
+        "results": results,
     }
 
 
@@ -140,12 +140,12 @@ def main():
     for key, unit in (("displacement_um", "um"), ("tilt_mrad", "mrad")):
         print(f"shaft {key.split('_')[0]:12s} dynamic {np.round(dyn[key], 3).tolist()} {unit}, "
               f"quasi-static {np.round(qs[key], 3).tolist()} {unit}")
-    for k, h in enumerate(handles):
+    for k in range(len(handles)):
         print(f"bearing {k}: inner-race centre moved {np.round(dyn['race_shift_um'][k], 3).tolist()} um "
               f"(quasi-static {np.round(qs['race_shift_um'][k], 3).tolist()} um)")
         print(f"           reaction on the shaft {np.round(dyn['reactions_N'][k], 1).tolist()} N "
               f"(quasi-static {np.round(qs['reactions_N'][k], 1).tolist()} N)")
-        s = h.Results(mbs).summary()
+        s = out["results"][k].summary()
         print(f"           kinematic cage slip {s['kinematic_cage_slip_percent']:.3f} %, max inner load "
               f"{s['max_inner_load']:.0f} N (quasi-static {qs['inner_load_max_N'][k]:.0f} N)")
     if args.plot:
@@ -153,8 +153,8 @@ def main():
 
         path = Path("out/hss_shaft")
         path.mkdir(parents=True, exist_ok=True)
-        for k, h in enumerate(handles):
-            plot_run(h.Results(mbs), path / f"bearing{k}.png", title=f"HSS bearing {k}")
+        for k, res in enumerate(out["results"]):
+            plot_run(res, path / f"bearing{k}.png", title=f"HSS bearing {k}")
         print(f"wrote {path}/bearing0.png, bearing1.png")
 
 
