@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from contact.ballrace import ContactLaw
 from exudyn_bearing.errors import BearingSimulationError
 from exudyn_bearing.runner import SolverSettings, simulate
 
@@ -42,11 +43,15 @@ def measures(summary) -> dict:
 
 
 def settings_grid(case: str):
-    """(label, SolverSettings) for every solver family over a range of steps/tolerances."""
+    """(label, SolverSettings[, ContactLaw]) for every solver family over a range of
+    steps/tolerances, and the numpy contact path against the compiled one."""
     grid = []
     steps_ga = (1e-4, 5e-5, 2.5e-5)
+    grid += [("GA rho=0.8", SolverSettings("generalized-alpha", step=h, output_step=max(h, 1e-4)))
+             for h in (5e-4, 2e-4)]
     for rho in (0.8, 0.5, 0.0):
         grid += [(f"GA rho={rho:g}", SolverSettings("generalized-alpha", step=h, spectral_radius=rho)) for h in steps_ga]
+    grid += [("GA rho=0.8, numpy contacts", SolverSettings("generalized-alpha", step=1e-4), ContactLaw(compiled=False))]
     grid += [("trapezoidal", SolverSettings("trapezoidal", step=h)) for h in steps_ga]
     grid += [("GA rho=0.8, loose Newton", SolverSettings("generalized-alpha", step=1e-4, relative_tolerance=1e-4))]
     grid += [("GA rho=0.8, Exudyn Jacobian", SolverSettings("generalized-alpha", step=1e-4, jacobian="exudyn"))]
@@ -76,12 +81,12 @@ def run_case(case: str, sim_time: float, log) -> dict:
     ref = refs[-1][1]
     out["reference"] = {"solver": refs[-1][0].solver, "step": refs[-1][0].step, "values": ref,
                         "self_error": {k: abs(refs[0][1][k] - ref[k]) for k in QUANTITIES}}
-    for label, s in settings_grid(case):
+    for label, s, *law in settings_grid(case):
         t0 = _time.perf_counter()
         row = {"label": label, "solver": s.solver, "step": s.step, "spectral_radius": s.spectral_radius,
                "relative_tolerance": s.relative_tolerance, "jacobian": s.jacobian}
         try:
-            summary = simulate(time=sim_time, settings=s, **kw)
+            summary = simulate(time=sim_time, settings=s, contact_law=law[0] if law else ContactLaw(), **kw)
             m = measures(summary)
             row.update(wall_time_s=summary.wall_time_s, steps=summary.steps, newton_iterations=summary.newton_iterations,
                        jacobian_updates=summary.jacobian_updates, values=m,

@@ -81,6 +81,11 @@ class ContactLaw:
     hertz_method : {'fit', 'exact'}
     friction_coefficient, friction_regularization : float
         μ and the slip speed u_r (m/s) that smooths stick–slip, for ``traction='coulomb'``.
+    compiled : bool
+        Evaluate the bearing's contacts with the numba-compiled kernels
+        (:mod:`contact.compiled`, the same equations without per-call numpy overhead, ~4x
+        faster) where they cover the law: Crook by the fast rule or no traction, Hertz fits,
+        no limiting shear. Otherwise, or with False, the numpy functions of this package.
     max_barus_exponent : float
         Bound on the Barus exponent c_etaP p of the traction viscosity (MODEL.md §6): the
         traction is evaluated with p_max <= max_barus_exponent / c_etaP (3.4 GPa for the
@@ -100,6 +105,7 @@ class ContactLaw:
     limiting_shear: float | None = None
     hertz_method: str = "fit"
     max_barus_exponent: float = 60.0
+    compiled: bool = True
     friction_coefficient: float = 0.05
     friction_regularization: float = 1e-3
 

@@ -160,6 +160,14 @@ class BearingConnector:
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
         self._params_cache = {}
+        self._compiled = None
+        self._rotations = rotation_matrices
+        if law.compiled:
+            from . import compiled
+
+            if compiled.supports(law):
+                self._compiled = compiled.CompiledForces(self)
+                self._rotations = compiled.kernels.rotation_matrices
 
     # -- state of a race frame ---------------------------------------------------------
     def _race_frame(self, name, t, pos, vel, rot, omega):
@@ -201,7 +209,7 @@ class BearingConnector:
         """Positions, rotation matrices, velocities and LOCAL angular velocities per node slot."""
         qq = np.asarray(q, dtype=float).reshape(self.n_nodes, 6)
         vv = np.asarray(q_t, dtype=float).reshape(self.n_nodes, 6)
-        return qq[:, :3], rotation_matrices(qq[:, 3:]), vv[:, :3], vv[:, 3:]
+        return qq[:, :3], self._rotations(np.ascontiguousarray(qq[:, 3:])), vv[:, :3], vv[:, 3:]
 
     def evaluate(self, t, q, q_t, details=False):
         """Generalized forces for absolute coordinates q (with reference) and velocities q_t.
@@ -227,18 +235,19 @@ class BearingConnector:
                 self.first_non_finite = self._non_finite(t, pos, vel, omega)
             nan = np.full(6 * self.n_nodes, np.nan)
             return (nan.reshape(-1, 6), np.full((self.z, self.n_nodes, 6), 0.0)) if split else nan
-        out, react, parts = self._batch_forces(t, pos[None], rot[None], vel[None], omega[None])
-        out, react = out[0], react[0]
-        deepest = int(np.argmax(parts[0].penetration))
-        if parts[0].penetration[deepest] > self.max_penetration * self.bearing.ball_diameter:
+        out, react, pen, load, parts = self._batch_forces(t, pos[None], rot[None], vel[None], omega[None],
+                                                          details=details)
+        out, react, pen, load = out[0], react[0], pen[0].ravel(), load[0].ravel()
+        deepest = int(np.argmax(pen))
+        if pen[deepest] > self.max_penetration * self.bearing.ball_diameter:
             # Hertz theory and the groove geometry are meaningless here: reject the state
             # like a blown-up one (a trial iterate may recover with a smaller step)
             if self.first_non_finite is None:
                 race, ball = ("inner", "outer")[deepest // self.z], deepest % self.z
                 self.first_non_finite = (
                     f"t = {t:.6g} s: ball {ball} pushed out of its groove at the {race} race: elastic approach "
-                    f"{parts[0].penetration[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the ball "
-                    f"diameter (Q = {parts[1].normal_load[deepest]:.4g} N); the load is beyond what the bearing "
+                    f"{pen[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the ball "
+                    f"diameter (Q = {load[deepest]:.4g} N); the load is beyond what the bearing "
                     "can carry")
             nan = np.full(6 * self.n_nodes, np.nan)
             return (nan.reshape(-1, 6), np.zeros((self.z, self.n_nodes, 6))) if split else nan
@@ -257,11 +266,39 @@ class BearingConnector:
                               race_omega["inner"][0], race_omega["outer"][0],
                               self.rotation, self.origin, out.ravel())
 
-    def _batch_forces(self, t, pos, rot, vel, omega):
+    def _batch_forces(self, t, pos, rot, vel, omega, details=False):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
-        to the race/cage slots (B, Z, n_nodes, 6), and (kinematics, forces, cage force,
-        drag force, race angular velocities) of all B 2Z contacts. One vectorized evaluation of all contacts."""
+        to the race/cage slots (B, Z, n_nodes, 6), penetration (m) and normal load (N) of
+        each contact (B, 2, Z; inner race first), and, from the numpy path, (kinematics,
+        forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
+        from the compiled path, which is used unless ``details`` are asked for)."""
+        if self._compiled is not None and not details:
+            out, react, pen, load = self._compiled(t, pos, rot, vel, omega)
+            parts = None
+        else:
+            out, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
+            pen = parts[0].penetration.reshape(pos.shape[0], 2, self.z)
+            load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
+        if self.layout["inner"] is not None:
+            out[:, self.layout["inner"], :3] += self.applied_force(t)
+        for slot, what in self.held.items():
+            out[:, slot, 3:] = 0.0
+            react[:, :, slot, 3:] = 0.0
+            if what == "all":
+                out[:, slot, :3] = 0.0
+                react[:, :, slot, :3] = 0.0
+        for slot, (race, inertia) in self.driven.items():
+            dt = 1e-6
+            w_ref = race.speed(t)
+            accel = (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt)
+            w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
+            out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
+        return out, react, pen, load, parts
+
+    def _numpy_forces(self, t, pos, rot, vel, omega):
+        """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of
+        the compiled path), before applied loads and held races."""
         bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
         balls = self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
@@ -309,26 +346,12 @@ class BearingConnector:
                                                   self.bearing.ball_radius)
         force[:, balls] += f_con.sum(axis=1) + cage_force + drag_force
         torque[:, balls] += m_con.sum(axis=1)
-        if self.layout["inner"] is not None:
-            force[:, self.layout["inner"]] += self.applied_force(t)
         out = np.empty((bsz, n_nodes, 6))
         out[..., :3] = force
         out[..., 3:] = np.einsum("bnji,bnj->bni", rot, torque)  # A^T tau: local-omega coordinates
         react = np.empty((bsz, z, n_nodes, 6))
         react[..., :3] = react_f
         react[..., 3:] = np.einsum("bnji,bznj->bzni", rot, react_t)
-        for slot, what in self.held.items():
-            out[:, slot, 3:] = 0.0
-            react[:, :, slot, 3:] = 0.0
-            if what == "all":
-                out[:, slot, :3] = 0.0
-                react[:, :, slot, :3] = 0.0
-        for slot, (race, inertia) in self.driven.items():
-            dt = 1e-6
-            w_ref = race.speed(t)
-            accel = (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt)
-            w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
-            out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
         return out, react, (kin_all, frc_all, cage_force, drag_force,
                             {name: fr[3] for name, fr in frames.items()})
 
@@ -370,7 +393,9 @@ class BearingConnector:
 
         Each ball's forces depend only on its own state (and the races and cage), so one
         perturbation of the same coordinate of all balls at once gives every ball's
-        block; race and cage columns are perturbed one at a time. Rotation columns are
+        block; race and cage columns are perturbed one at a time. Columns of a held race's
+        held coordinates are left out: its rows are zero there, so Newton never changes
+        those coordinates and the columns would multiply zero increments. Rotation columns are
         derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
         which is what Exudyn's Lie-group nodes expect. Forward differences; all perturbed
         states go through ONE batched evaluation (per-call overhead dominates at 32
@@ -385,7 +410,10 @@ class BearingConnector:
         others = [s for s in range(self.n_nodes) if s not in ball_slots]
         groups = [balls] if not coupled else [np.array([b]) for b in balls]
         groups += [np.array([s]) for s in others]
-        columns = [(group, k, which) for group in groups for k in range(6) for which in ("q", "v")]
+        frozen = {s: range(6) if what == "all" else range(3, 6) for s, what in self.held.items()
+                  if s not in self.driven}
+        columns = [(group, k, which) for group in groups for k in range(6) for which in ("q", "v")
+                   if k not in frozen.get(int(group[0]), ())]
         nb = 1 + len(columns)
         p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
         v2, w2 = np.repeat(vel[None], nb, axis=0), np.repeat(wl[None], nb, axis=0)
@@ -404,7 +432,7 @@ class BearingConnector:
                 (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
         if not (np.all(np.isfinite(p2[0])) and np.all(np.isfinite(v2[0])) and np.all(np.isfinite(w2[0]))):
             return np.full((n6, n6), np.nan)
-        out, react, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2))
+        out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2))
         d_out = (out[1:] - out[0]) / steps[:, None, None]
         d_react = (react[1:] - react[0]) / steps[:, None, None, None]
         dq = np.zeros((n6, n6))

@@ -11,6 +11,7 @@ import csv
 import itertools
 import json
 import math
+import multiprocessing
 import os
 import time as _time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -261,7 +262,10 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
             for job in jobs:
                 record(_run_point(job))
         else:
-            with ProcessPoolExecutor(max_workers=min(n, len(jobs))) as pool:
+            # spawned, not forked: a process that has run the compiled contacts holds GNU
+            # OpenMP threads, and forking it aborts the child
+            with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn")) \
+                    as pool:
                 for fut in as_completed([pool.submit(_run_point, job) for job in jobs]):
                     record(fut.result())
     order = {p.key: i for i, p in enumerate(grid)}

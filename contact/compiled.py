@@ -1,0 +1,474 @@
+"""Compiled (numba) evaluation of a whole bearing's contact forces in one pass.
+
+The numpy functions of this package are the reference; this module computes the same
+equations, contact by contact, without per-call array overhead (a 16-ball bearing's
+right-hand side spends ~1 ms of its ~1.7 ms in numpy bookkeeping on arrays of 32 rows):
+
+* :func:`race_contacts` — kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), Hertz
+  fits (§3, :func:`contact.hertz.hertz_contact` with ``method='fit'``), damped normal load,
+  Hamrock–Dowson film (§5, P17) and the Crook traction by the fast rule (§6, P12–P16;
+  :func:`contact.traction.crook_traction` with ``fast=True``: the same node tables, float32
+  along each ray as there, float64 for the rare ray that overflows float32), force and
+  moment on the ball as :func:`contact.ballrace.ball_race_forces`;
+* :func:`cage_and_drag` — rigid-cage pocket forces, the paper's spring chain (P9, P10) and
+  ball drag (§8) as :mod:`contact.cage`;
+* :func:`race_contacts_parallel` — the same with the contacts spread over numba's threads;
+* :func:`crook_fast` — the traction rule alone, vectorized (for tests and benchmarks).
+
+Everything is in one global frame and SI units. ``tests/test_compiled.py`` checks every
+output against the numpy functions on the same states.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from . import traction as _tr
+
+__all__ = ["crook_fast", "crook_tables", "race_contacts", "race_contacts_parallel", "cage_and_drag",
+           "rotation_matrices"]
+
+_EPS_CAP = float(_tr._FAST_EPS_CAP)
+_LOG2_EPS_CAP = math.log2(_EPS_CAP)
+_EPS_STEPS = float(_tr._FAST_EPS_STEPS)
+_N_EPS = int(_tr._FAST_N_EPS)
+_N_BETA = int(_tr._FAST_N_BETA)
+_FC = float(_tr._FAST_FC)
+_BFAC = float(_tr._FAST_BFAC)
+_BETA_MIN = float(_tr._FAST_BETA_MIN)
+_BETA_STEP = float(_tr._FAST_BETA_STEP)
+_PSI_MIN = 1e-12  # the fast rule's ψ floor (keeps G(ψ) finite at the pole)
+
+
+
+def crook_tables(order: int = 16):
+    """The fast rule's node tables (:func:`contact.traction._fast_tables`): ray angles and
+    weights (float64), radial nodes and weights in float32 and float64 (same values):
+    (psi, wpsi, rho32, w32, rho64, w64)."""
+    tab = _tr._fast_tables(int(order))
+    f64 = [np.ascontiguousarray(tab[k], dtype=np.float64) for k in ("psi", "wpsi", "rho", "w")]
+    return (*f64[:2], f64[2].astype(np.float32), f64[3].astype(np.float32), *f64[2:])
+
+
+# fast-math flags without 'reassoc' (the (1 + z) - 1 correction below must survive) and
+# without 'nnan'/'ninf' (NaN and inf are tested for)
+_FLAGS = {"nsz", "arcp", "contract", "afn"}
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
+    """Sums along one ray of g W ρ^j, j = 0, 1, 2 (MODEL.md §6: g = η_m/η_T, the Crook
+    factor times the Barus viscosity), in the tables' precision: float32 normally (twice
+    as fast; the numpy fast rule uses float32 as well), float64 for the rare ray whose ψ
+    overflows float32. ``scratch`` (dtype of the tables) casts the ray constants."""
+    scratch[0] = rmax
+    scratch[1] = r2
+    scratch[2] = cq
+    scratch[3] = br
+    scratch[4] = a0
+    scratch[5] = lam
+    scratch[6] = 1.0
+    rm, rr2, cq_, br_, a0_, lam_, one = (scratch[0], scratch[1], scratch[2], scratch[3], scratch[4], scratch[5],
+                                         scratch[6])
+    scratch[7] = 0.0
+    k0 = k1 = k2 = scratch[7]
+    for r in range(rho_tab.shape[0]):
+        pr = rho_tab[r, ir]
+        rho = rm * pr
+        sg = math.sqrt((rm - rho) * (rho + rr2))  # p/p_max
+        e = math.exp(lam_ * sg)  # η/η_T
+        psi = ((rho * cq_ + br_) * rho + a0_) * e  # ψ = c1² |u|²
+        # G = asinh(s)/(s r), s = √ψ, r = √(1 + ψ); asinh(s) = log1p(z), z = s + ψ/(1 + r),
+        # log1p(z) = log(1 + z) z/((1 + z) − 1)
+        sq = math.sqrt(psi)
+        rt = math.sqrt(one + psi)
+        z = sq + psi / (one + rt)
+        u1 = one + z
+        g = math.log(u1) * (z / (u1 - one)) / (sq * rt) * e
+        wg = w_tab[r, ir] * g
+        k0 += wg
+        wg *= pr
+        k1 += wg
+        k2 += wg * pr
+    return float(k0), float(k1), float(k2)
+
+
+@njit(cache=True, error_model="numpy")
+def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64):
+    """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
+    :func:`contact.traction._fast_crook`, whose steps this follows one contact at a time)."""
+    lo = min(a, b)
+    if not lo > 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    hi = max(a, b)
+    a_long = a >= b
+    ab = a * b
+    lam = c_p * pm
+    cth = c1_coef * eta_t
+    # spin pole, normalised (X = x/b, Y = y/a)
+    Xp = uy / om / (-b)
+    Yp = ux / om / a
+    rp2 = Xp * Xp + Yp * Yp
+    spin = rp2 < 1e12
+    if not spin:
+        Xp = 0.0
+        Yp = 0.0
+        rp2 = 0.0
+    ridge = Yp if a_long else Xp
+    r2r = ridge * ridge
+    inv_c1w = 1.0 / math.sqrt(cth * (om * om))
+    rho_pole = math.exp(-0.5 * lam * math.sqrt(max(1.0 - rp2, 0.0))) * inv_c1w
+    rho_ridge = math.exp(-0.5 * lam * math.sqrt(max(1.0 - r2r, 0.0))) * inv_c1w
+    rho_peak = math.exp(-0.5 * lam) * inv_c1w
+    inside = rp2 < 1.0 - 1e-12
+    lo2 = lo * lo
+    hi2 = hi * hi
+    rr2 = rho_ridge * rho_ridge
+    mode_p = inside and ((rho_pole < hi) or ((r2r < 1.0) and ((rp2 - r2r) * lo2 + rr2 < hi2)))
+    if mode_p:
+        eps = math.asinh(math.sqrt((lo2 + 0.25 * rr2) / (hi2 - lo2)))
+        th0 = 0.0 if a_long else 0.5 * math.pi
+    else:
+        if spin:
+            rp = math.sqrt(rp2)
+            q = rp / math.sqrt((b * Yp) ** 2 + (a * Xp) ** 2)
+            d_out = rp - 1.0
+            d_out = d_out * ab * q if d_out > 0.0 else 0.0  # fmax: NaN -> 0
+            far = rho_pole / rp if inside else rho_peak
+            eps = math.sqrt(d_out * d_out + far * far) * q
+        else:
+            eps = _EPS_CAP
+        th0 = math.atan2(Yp, Xp)
+    # table columns: angular grading rounded to (π/2) 2^(−k/8), radial grading to 0.3 + 0.1 k
+    lev = -_EPS_STEPS * math.log2(eps) + _EPS_STEPS * _LOG2_EPS_CAP
+    lev = min(max(np.rint(lev), 0.0), _N_EPS - 1.0) if lev == lev else 0.0
+    lr_f = math.asinh(_FC * math.sqrt(ab) / rho_peak) * (_BFAC / _BETA_STEP) - _BETA_MIN / _BETA_STEP
+    lr_f = min(max(np.rint(lr_f), 0.0), _N_BETA - 1.0) if lr_f == lr_f else 0.0
+    ie = int(lev)
+    if mode_p:
+        ir = int(lr_f)
+        Xo, Yo, rO = Xp, Yp, 1.0 - rp2
+        uOx, uOy = 0.0, 0.0
+    else:
+        ir = _N_BETA  # rays from the centre
+        Xo, Yo, rO = 0.0, 0.0, 1.0
+        uOx, uOy = ux, uy
+    wc = 2.0 * om * cth
+    a0 = (uOx * uOx + uOy * uOy) * cth + _PSI_MIN
+    w2c = om * om * cth
+    s32 = np.empty(8, np.float32)
+    s64 = np.empty(8)
+    S0 = 0.0
+    Sx = 0.0
+    Sy = 0.0
+    Sr = 0.0
+    scale = ab * eta_t / hh
+    for d in range(psi_tab.shape[0]):
+        ang = psi_tab[d, ie] + th0
+        c = math.cos(ang)
+        s = math.sin(ang)
+        oe = c * Xo + s * Yo
+        hc = math.sqrt(oe * oe + rO)
+        rmax = hc - oe
+        r2 = hc + oe
+        bc = c * b  # ray direction, metres per unit ρ
+        as_ = s * a
+        q2 = bc * bc + as_ * as_
+        br = bc * (wc * uOy) - as_ * (wc * uOx)
+        k0, k1, k2 = _ray_sums(rmax, r2, q2 * w2c, br, a0, lam, ir, rho32, w32, s32)
+        if not (abs(k0) < np.inf and abs(k1) < np.inf and abs(k2) < np.inf):
+            k0, k1, k2 = _ray_sums(rmax, r2, q2 * w2c, br, a0, lam, ir, rho64, w64, s64)
+        w0 = wpsi_tab[d, ie] * rmax * rmax * scale
+        S0 += k0 * w0
+        w0 *= rmax
+        Sx += k1 * w0 * bc
+        Sy += k1 * w0 * as_
+        Sr += k2 * w0 * rmax * q2
+    xo = Xo * b
+    yo = Yo * a
+    fx = -om * Sy + uOx * S0
+    fy = om * Sx + uOy * S0
+    cr = uOy * Sx - uOx * Sy
+    mz = om * Sr + cr + xo * fy - yo * fx
+    heat = om * om * Sr + (uOx * uOx + uOy * uOy) * S0 + 2.0 * om * cr
+    return fx, fy, mz, heat
+
+
+@njit(cache=True, error_model="numpy")
+def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, out):
+    for i in range(ux.shape[0]):
+        out[0, i], out[1, i], out[2, i], out[3, i] = _crook_one(
+            ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32,
+            rho64, w64)
+
+
+def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16):
+    """Crook traction (f_x, f_y, M_z, heat) of n contacts by the compiled fast rule, each
+    an array (n,) (MODEL.md §6). Arguments as :func:`contact.traction.crook_traction`
+    (flat arrays, reference temperature, no limiting shear); no input checks."""
+    args = [np.ascontiguousarray(v, dtype=np.float64).ravel() for v in (u_x, u_y, omega_s, a, b, p_max, h)]
+    out = np.empty((4, args[0].shape[0]))
+    c1_coef = lubricant.temperature_viscosity / (8.0 * lubricant.thermal_conductivity)
+    _crook_many(*args, float(lubricant.viscosity), float(lubricant.pressure_viscosity), c1_coef,
+                *crook_tables(order), out)
+    return out
+
+
+@njit(cache=True, error_model="numpy")
+def rotation_matrices(nu):
+    """Rodrigues rotation matrices of rotation vectors (n, 3) -> (n, 3, 3), as
+    :func:`contact.kinematics.rotation_matrices`."""
+    n = nu.shape[0]
+    out = np.empty((n, 3, 3))
+    for i in range(n):
+        x, y, z = nu[i, 0], nu[i, 1], nu[i, 2]
+        angle2 = x * x + y * y + z * z
+        if angle2 < 1e-12:
+            c1 = 1.0 - angle2 / 6.0
+            c2 = 0.5 - angle2 / 24.0
+        else:
+            angle = math.sqrt(angle2)
+            c1 = math.sin(angle) / angle
+            c2 = (1.0 - math.cos(angle)) / angle2
+        # I + c1 S + c2 S², S the skew matrix of nu; S² = nu nuᵀ - |nu|² I
+        out[i, 0, 0] = 1.0 + c2 * (x * x - angle2)
+        out[i, 1, 1] = 1.0 + c2 * (y * y - angle2)
+        out[i, 2, 2] = 1.0 + c2 * (z * z - angle2)
+        out[i, 0, 1] = -c1 * z + c2 * x * y
+        out[i, 1, 0] = c1 * z + c2 * x * y
+        out[i, 0, 2] = c1 * y + c2 * x * z
+        out[i, 2, 0] = -c1 * y + c2 * x * z
+        out[i, 1, 2] = -c1 * x + c2 * y * z
+        out[i, 2, 1] = c1 * x + c2 * y * z
+    return out
+
+
+@njit(cache=True, error_model="numpy")
+def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
+                  e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
+                  c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
+    z = c.shape[1]
+    diam = 2.0 * ball_radius
+    p_cap = max_barus / c_p if c_p > 0.0 else np.inf
+    ib = idx // (2 * z)
+    k = (idx // z) % 2
+    j = idx % z
+    o = ro[ib, k]
+    R = rr[ib, k]
+    vo = rv[ib, k]
+    wr = rw[ib, k]
+    ri, zi, tube = groove[k, 0], groove[k, 1], groove[k, 2]
+    sgn = sign[k]
+    f_conf = conformity[k]
+    cx, cy, cz = c[ib, j, 0], c[ib, j, 1], c[ib, j, 2]
+    rx_, ry_, rz_ = cx - o[0], cy - o[1], cz - o[2]
+    # race-frame position (Rᵀ rel) and the groove torus (MODEL.md §2)
+    lx = R[0, 0] * rx_ + R[1, 0] * ry_ + R[2, 0] * rz_
+    ly = R[0, 1] * rx_ + R[1, 1] * ry_ + R[2, 1] * rz_
+    lz = R[0, 2] * rx_ + R[1, 2] * ry_ + R[2, 2] * rz_
+    rho_c = math.hypot(lx, ly)
+    ex, ey = lx / rho_c, ly / rho_c
+    gx, gy, gz = ri * ex, ri * ey, zi
+    dx, dy, dz = lx - gx, ly - gy, lz - gz
+    dist = math.sqrt(dx * dx + dy * dy + dz * dz)
+    nlx, nly, nlz = dx / dist, dy / dist, dz / dist
+    angle = math.atan2(sgn * nlz, sgn * (nlx * ex + nly * ey))
+    pen = dist - tube
+    penetration[ib, k, j] = pen
+    nx = R[0, 0] * nlx + R[0, 1] * nly + R[0, 2] * nlz
+    ny = R[1, 0] * nlx + R[1, 1] * nly + R[1, 2] * nlz
+    nz = R[2, 0] * nlx + R[2, 1] * nly + R[2, 2] * nlz
+    t1x = -R[0, 0] * ey + R[0, 1] * ex  # R (e_z x radial)
+    t1y = -R[1, 0] * ey + R[1, 1] * ex
+    t1z = -R[2, 0] * ey + R[2, 1] * ex
+    t2x = ny * t1z - nz * t1y
+    t2y = nz * t1x - nx * t1z
+    t2z = nx * t1y - ny * t1x
+    # velocities at the contact centre p = c + r n (MODEL.md §6)
+    wbx, wby, wbz = w[ib, j, 0], w[ib, j, 1], w[ib, j, 2]
+    px, py, pz = ball_radius * nx, ball_radius * ny, ball_radius * nz  # p - c
+    qx, qy, qz = rx_ + px, ry_ + py, rz_ + pz  # p - o
+    sx = vo[0] + wr[1] * qz - wr[2] * qy - (v[ib, j, 0] + wby * pz - wbz * py)
+    sy = vo[1] + wr[2] * qx - wr[0] * qz - (v[ib, j, 1] + wbz * px - wbx * pz)
+    sz = vo[2] + wr[0] * qy - wr[1] * qx - (v[ib, j, 2] + wbx * py - wby * px)
+    u_x = sx * t1x + sy * t1y + sz * t1z
+    u_y = sx * t2x + sy * t2y + sz * t2z
+    spin = (wr[0] - wbx) * nx + (wr[1] - wby) * ny + (wr[2] - wbz) * nz
+    # groove-centre velocity -> approach rate
+    ggx = R[0, 0] * gx + R[0, 1] * gy + R[0, 2] * gz
+    ggy = R[1, 0] * gx + R[1, 1] * gy + R[1, 2] * gz
+    ggz = R[2, 0] * gx + R[2, 1] * gy + R[2, 2] * gz
+    vgx = vo[0] + wr[1] * ggz - wr[2] * ggy
+    vgy = vo[1] + wr[2] * ggx - wr[0] * ggz
+    vgz = vo[2] + wr[0] * ggy - wr[1] * ggx
+    rate = (v[ib, j, 0] - vgx) * nx + (v[ib, j, 1] - vgy) * ny + (v[ib, j, 2] - vgz) * nz
+    # the contact moves with the ball's orbit relative to the race
+    orx = v[ib, j, 0] - (vo[0] + wr[1] * rz_ - wr[2] * ry_)
+    ory = v[ib, j, 1] - (vo[1] + wr[2] * rx_ - wr[0] * rz_)
+    orz = v[ib, j, 2] - (vo[2] + wr[0] * ry_ - wr[1] * rx_)
+    orbit_rel = (orx * t1x + ory * t1y + orz * t1z) / rho_c
+    rho_p = math.hypot(lx + ball_radius * nlx, ly + ball_radius * nly)
+    entrainment = -0.5 * u_x - orbit_rel * rho_p
+    # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
+    r_x = diam * (pitch_diameter + sgn * diam * math.cos(angle)) / (2.0 * pitch_diameter)
+    r_y = f_conf * diam / (2.0 * f_conf - 1.0)
+    ratio = max(r_y / r_x, 1.0)
+    ell = 1.0339 * ratio ** 0.6360
+    first = 1.5277 + 0.6023 * math.log(ratio)
+    second = 1.0003 + 0.5968 / ratio
+    radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
+    stiff = math.pi * ell * e_prime * math.sqrt(second * radius / (4.5 * first ** 3))
+    q = 0.0
+    if pen > 0.0:
+        q = stiff * pen ** 1.5
+        if damping_ratio > 0.0:
+            q += 2.0 * damping_ratio * math.sqrt(1.5 * stiff * math.sqrt(pen) * ball_mass) * rate
+        q = max(q, 0.0)
+    load[ib, k, j] = q
+    fx = 0.0
+    fy = 0.0
+    mz = 0.0
+    if traction == 1 and q > 0.0:
+        base = 6.0 * second * q * radius / (math.pi * e_prime)
+        sa = np.cbrt(ell * ell * base)
+        sb = np.cbrt(base / ell)
+        p_max = 1.5 * q / (math.pi * sa * sb)
+        # Hamrock–Dowson central film (P17), floored
+        u_d = eta0 * abs(entrainment) / (e_prime * r_x)
+        w_d = q / (e_prime * r_x * r_x)
+        h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
+            1.0 - 0.61 * math.exp(-0.73 * ell))
+        h = max(h, min_film)
+        fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef,
+                                   psi_tab, wpsi_tab, rho32, w32, rho64, w64)
+        if not spin_moment:
+            mz = 0.0
+    Fx = -q * nx + fx * t1x + fy * t2x
+    Fy = -q * ny + fx * t1y + fy * t2y
+    Fz = -q * nz + fx * t1z + fy * t2z
+    force[ib, k, j, 0] = Fx
+    force[ib, k, j, 1] = Fy
+    force[ib, k, j, 2] = Fz
+    # lever arm r n: the normal part has no moment about the ball centre
+    moment[ib, k, j, 0] = ball_radius * (ny * Fz - nz * Fy) + mz * nx
+    moment[ib, k, j, 1] = ball_radius * (nz * Fx - nx * Fz) + mz * ny
+    moment[ib, k, j, 2] = ball_radius * (nx * Fy - ny * Fx) + mz * nz
+
+
+@njit(cache=True, error_model="numpy")
+def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
+                  e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
+                  c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+    """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
+
+    Parameters
+    ----------
+    c, v, w : ndarray (B, Z, 3)
+        Ball centres (m), velocities (m/s), GLOBAL angular velocities (rad/s).
+    ro, rr, rv, rw : ndarray (B, 2, 3), (B, 2, 3, 3), (B, 2, 3), (B, 2, 3)
+        Origin, rotation (third column: axis), origin velocity and angular velocity of the
+        inner (index 0) and outer (1) race frames.
+    groove : ndarray (2, 3)
+        Per race: groove-centre radius, axial position (race frame) and (f - 1/2) D, m.
+    conformity, sign : ndarray (2,)
+        f and the race sign (-1 inner, +1 outer) of :func:`contact.geometry.curvature_radii`.
+    psi_tab, wpsi_tab, rho32, w32, rho64, w64 : ndarray
+        :func:`crook_tables`.
+    traction : int
+        0: normal forces only; 1: Crook (fast rule).
+    spin_moment : bool
+    eta0, c_p, c1_coef, max_barus : float
+        η0 (Pa s), c_ηP (1/Pa), c_ηT/(8 K_c), and the bound on c_ηP p_max of the traction.
+    force, moment : ndarray (B, 2, Z, 3), out
+        On each ball at its contact with race k, N; about the ball centre, N m.
+    penetration, load : ndarray (B, 2, Z), out
+        Elastic approach δ (m) and normal load Q (N).
+    """
+    for idx in range(c.shape[0] * 2 * c.shape[1]):
+        _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
+                      e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
+                      c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
+                           e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
+                           c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+    """:func:`race_contacts` with the contacts spread over numba's threads."""
+    for idx in prange(c.shape[0] * 2 * c.shape[1]):
+        _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
+                      e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
+                      c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+
+
+@njit(cache=True, error_model="numpy")
+def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pitch_radius, clearance,
+                  stiffness, damping, axis, origin, drag_factor, cage_force, drag_force):
+    """Cage forces (``kind`` 1: rigid cage pockets, 2: spring chain P9/P10, 0: none) and
+    drag forces (``drag_factor`` = 1/2 C_D rho pi r², 0: none) on the balls of B states,
+    as :mod:`contact.cage`; written into ``cage_force``, ``drag_force`` (B, Z, 3)."""
+    nb, z = c.shape[0], c.shape[1]
+    gap = 0.5 * clearance
+    free = 2.0 * pitch_radius * math.sin(math.pi / z)
+    for ib in range(nb):
+        for j in range(z):
+            for i in range(3):
+                cage_force[ib, j, i] = 0.0
+                drag_force[ib, j, i] = 0.0
+        if kind == 1:
+            R = cage_r[ib]
+            for j in range(z):
+                cs, sn = math.cos(pocket_angles[j]), math.sin(pocket_angles[j])
+                arm = np.empty(3)
+                e = np.empty(3)
+                for i in range(3):
+                    arm[i] = pitch_radius * (R[i, 0] * cs + R[i, 1] * sn)
+                    e[i] = -R[i, 0] * sn + R[i, 1] * cs
+                s = 0.0
+                s_dot = 0.0
+                for i in range(3):
+                    s += (c[ib, j, i] - cage_o[ib, i] - arm[i]) * e[i]
+                wxa0 = cage_w[ib, 1] * arm[2] - cage_w[ib, 2] * arm[1]
+                wxa1 = cage_w[ib, 2] * arm[0] - cage_w[ib, 0] * arm[2]
+                wxa2 = cage_w[ib, 0] * arm[1] - cage_w[ib, 1] * arm[0]
+                s_dot = ((v[ib, j, 0] - cage_v[ib, 0] - wxa0) * e[0] + (v[ib, j, 1] - cage_v[ib, 1] - wxa1) * e[1]
+                         + (v[ib, j, 2] - cage_v[ib, 2] - wxa2) * e[2])
+                if gap == 0.0:
+                    mag = -stiffness * s - damping * s_dot
+                else:
+                    sgn = 1.0 if s > 0.0 else (-1.0 if s < 0.0 else 0.0)
+                    pen = abs(s) - gap
+                    mag = -sgn * max(stiffness * pen + damping * s_dot * sgn, 0.0) if pen > 0.0 else 0.0
+                for i in range(3):
+                    cage_force[ib, j, i] = mag * e[i]
+        elif kind == 2:
+            planar = np.empty((z, 3))
+            for j in range(z):
+                ca = c[ib, j, 0] * axis[0] + c[ib, j, 1] * axis[1] + c[ib, j, 2] * axis[2]
+                for i in range(3):
+                    planar[j, i] = c[ib, j, i] - ca * axis[i]
+            for j in range(z):
+                nxt = (j + 1) % z
+                ch = planar[nxt] - planar[j]
+                length = math.sqrt(ch[0] * ch[0] + ch[1] * ch[1] + ch[2] * ch[2])
+                f = stiffness * (length - free) / length
+                for i in range(3):  # spring j pulls ball j towards j+1 when stretched
+                    cage_force[ib, j, i] += f * ch[i]
+                    cage_force[ib, nxt, i] -= f * ch[i]
+        if drag_factor > 0.0:
+            for j in range(z):
+                r0, r1, r2 = c[ib, j, 0] - origin[0], c[ib, j, 1] - origin[1], c[ib, j, 2] - origin[2]
+                e0 = axis[1] * r2 - axis[2] * r1
+                e1 = axis[2] * r0 - axis[0] * r2
+                e2 = axis[0] * r1 - axis[1] * r0
+                norm = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+                e0, e1, e2 = e0 / norm, e1 / norm, e2 / norm
+                speed = v[ib, j, 0] * e0 + v[ib, j, 1] * e1 + v[ib, j, 2] * e2
+                mag = -drag_factor * abs(speed) * speed
+                drag_force[ib, j, 0] = mag * e0
+                drag_force[ib, j, 1] = mag * e1
+                drag_force[ib, j, 2] = mag * e2
+

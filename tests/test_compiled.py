@@ -1,0 +1,179 @@
+"""The compiled contact kernels (contact/compiled.py, exudyn_bearing/compiled.py) against
+the numpy functions of contact/ on the same states.
+
+The numpy path is the reference: the traction is checked against the ACCURATE quadrature
+(an independent rule with its own convergence tests), the whole connector against the
+numpy path of the same connector, which tests/test_connector.py checks against physics
+assembled by hand.
+"""
+from __future__ import annotations
+
+import threading
+
+import numpy as np
+import pytest
+
+exu = pytest.importorskip("exudyn")
+pytest.importorskip("numba")
+
+from contact import compiled  # noqa: E402
+from contact.ballrace import ContactLaw  # noqa: E402
+from contact.traction import crook_traction  # noqa: E402
+from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
+from exudyn_bearing import races  # noqa: E402
+from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
+from exudyn_bearing.connector import CageModel  # noqa: E402
+
+
+def _contacts(n, seed=0):
+    """Contact states of the reference bearing's range (MODEL.md §9): semi-axes 0.8–1.8 mm
+    across and 0.15–0.35 mm along the rolling direction, 0.3–1.4 GPa, films 0.05–0.5 um,
+    rolling/transverse slip up to ~1 m/s and spin up to 500 rad/s, so the spin pole lies
+    inside, near and outside the ellipse; some contacts without spin."""
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(0.8e-3, 1.8e-3, n)
+    b = rng.uniform(0.15e-3, 0.35e-3, n)
+    om = rng.normal(0.0, 200.0, n)
+    om[: n // 10] = 0.0
+    ux = rng.normal(0.0, 0.3, n) * rng.choice([0.01, 0.1, 1.0], n)
+    uy = rng.normal(0.0, 0.1, n) * rng.choice([0.01, 0.1, 1.0], n)
+    pm = rng.uniform(0.3e9, 1.4e9, n)
+    h = rng.uniform(5e-8, 5e-7, n)
+    return ux, uy, om, a, b, pm, h
+
+
+def _scale(fx, fy, mz, a):
+    """Per contact: the traction magnitude plus the spin moment over the long semi-axis."""
+    return np.hypot(fx, fy) + np.abs(mz) / a
+
+
+def test_crook_kernel_matches_the_accurate_rule():
+    ux, uy, om, a, b, pm, h = _contacts(300)
+    got = compiled.crook_fast(ux, uy, om, a, b, pm, h, LUB)
+    ref = crook_traction(ux, uy, om, a, b, pm, h, LUB, fast=False, order=24)
+    scale = _scale(ref.fx, ref.fy, ref.mz, np.maximum(a, b))
+    for name, g, r, s in (("fx", got[0], ref.fx, scale), ("fy", got[1], ref.fy, scale),
+                          ("mz", got[2] / np.maximum(a, b), ref.mz / np.maximum(a, b), scale),
+                          ("heat", got[3], ref.heat, np.abs(ref.heat))):
+        err = np.abs(g - r) / s
+        # the fast rule's documented worst error on reference states is 4.6e-4
+        assert np.max(err) < 2e-3, (name, np.max(err), int(np.argmax(err)))
+    assert np.median(np.abs(got[0] - ref.fx) / scale) < 2e-4
+
+
+def test_crook_kernel_is_the_numpy_fast_rule():
+    """Same nodes and weights as the numpy fast rule (float32 there, float32 rays with
+    float64 sums here): agreement far below the rule's own error."""
+    ux, uy, om, a, b, pm, h = _contacts(200, seed=1)
+    got = compiled.crook_fast(ux, uy, om, a, b, pm, h, LUB)
+    ref = crook_traction(ux, uy, om, a, b, pm, h, LUB, fast=True)
+    scale = _scale(ref.fx, ref.fy, ref.mz, np.maximum(a, b))
+    assert np.max(np.abs(got[0] - ref.fx) / scale) < 3e-4
+    assert np.max(np.abs(got[2] - ref.mz) / (scale * np.maximum(a, b))) < 3e-4
+
+
+def test_crook_kernel_redoes_float32_overflow_in_float64():
+    """c_etaP p_max = 90: e^(lambda sigma) overflows float32 near the peak; those rays are
+    redone in float64 and the result still matches the accurate rule."""
+    ux, uy, om, a, b, _, h = _contacts(40, seed=2)
+    pm = np.full(40, 90.0 / LUB.pressure_viscosity)
+    got = compiled.crook_fast(ux, uy, om, a, b, pm, h, LUB)
+    assert np.all(np.isfinite(got))
+    ref = crook_traction(ux, uy, om, a, b, pm, h, LUB, fast=False)
+    scale = _scale(ref.fx, ref.fy, ref.mz, np.maximum(a, b))
+    assert np.max(np.abs(got[0] - ref.fx) / scale) < 5e-3
+
+
+def test_unloaded_contact_has_no_traction():
+    got = compiled.crook_fast([0.5], [0.1], [30.0], [0.0], [0.0], [0.0], [1e-7], LUB)
+    assert np.all(got == 0.0)
+
+
+def _scene(law=ContactLaw(), **kw):
+    sc = exu.SystemContainer()
+    mbs = sc.AddSystem()
+    kw.setdefault("innerRace", races.Driven(1800))
+    brg = CreateAngularContactBearing(mbs, contactLaw=law, show=False, **kw)
+    mbs.Assemble()
+    q = np.asarray(mbs.systemData.GetODE2Coordinates())
+    qt = np.asarray(mbs.systemData.GetODE2Coordinates_t())
+    idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6) for n in brg.nodeNumbers])
+    rng = np.random.default_rng(5)
+    con = brg.connector
+    # generic state: every contact slides and spins, positions off the quasi-static ones
+    return sc, con, q[idx] + con.reference + rng.normal(0, 1e-6, idx.size), qt[idx] * (1 + rng.normal(0, 1e-3, idx.size))
+
+
+SCENES = {
+    "axial, rigid cage, drag": dict(axialForce=1300.0),
+    "combined load": dict(axialForce=2200.0, radialForce=2000.0),
+    "spring chain, no drag": dict(axialForce=300.0, cage=CageModel(kind="spring-chain"), ballDrag=None),
+    "pocket play, free outer race": dict(axialForce=600.0, cage=CageModel(clearance=2e-6), outerRace=races.Free()),
+    "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
+    "no spin moment, Fixed inner translation": dict(innerRace=races.Driven(1800, translation="fixed"),
+                                                    law=ContactLaw(spin_moment=False)),
+}
+
+
+def _both_paths(con, q, qt):
+    fast = con.evaluate(0.01, q, qt).reshape(-1, 6)
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = con.evaluate(0.01, q, qt).reshape(-1, 6)
+    finally:
+        con._compiled = kernel
+    return fast, ref
+
+
+@pytest.mark.parametrize("name", SCENES)
+def test_connector_compiled_path_matches_numpy_path(name):
+    kw = dict(SCENES[name])
+    _sc, con, q, qt = _scene(**kw)
+    assert con._compiled is not None
+    fast, ref = _both_paths(con, q, qt)
+    assert np.max(np.abs(ref[:, :3])) > 10.0  # loaded contacts
+    for part in (slice(0, 3), slice(3, 6)):  # forces (N) and torques (N m) on their own scales
+        err = np.max(np.abs(fast[:, part] - ref[:, part]))
+        assert err < 1e-6 * np.max(np.abs(ref[:, part])), (part, err)
+
+
+def test_spin_moment_term_matches_numpy_path():
+    """The spin moment M_z n alone (forces with it minus forces without it) is ~1e-4 of the
+    ball torques: compared on its own scale."""
+    parts = []
+    for spin in (True, False):
+        _sc, con, q, qt = _scene(law=ContactLaw(spin_moment=spin), axialForce=1300.0)
+        parts.append(_both_paths(con, q, qt))
+    d_fast, d_ref = parts[0][0] - parts[1][0], parts[0][1] - parts[1][1]
+    assert np.max(np.abs(d_ref[:, 3:])) > 1e-6
+    assert np.max(np.abs(d_fast - d_ref)) < 1e-4 * np.max(np.abs(d_ref[:, 3:]))
+
+
+def test_connector_jacobian_compiled_matches_numpy():
+    """The compiled Jacobian equals the numpy one up to finite-difference noise of the
+    float32 rays."""
+    _sc, con, q, qt = _scene(axialForce=1300.0)
+    fast = con.jacobian(0.01, q, qt, 1.0, 1e-4)
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = con.jacobian(0.01, q, qt, 1.0, 1e-4)
+    finally:
+        con._compiled = kernel
+    assert np.max(np.abs(fast - ref)) < 2e-4 * np.max(np.abs(ref))
+
+
+def test_serial_kernel_from_a_thread_equals_parallel():
+    _sc, con, q, qt = _scene(axialForce=1300.0)
+    main = con.evaluate(0.01, q, qt)
+    box = {}
+    worker = threading.Thread(target=lambda: box.setdefault("f", con.evaluate(0.01, q, qt)))
+    worker.start()
+    worker.join()
+    np.testing.assert_allclose(box["f"], main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
+
+
+@pytest.mark.parametrize("law", [ContactLaw(traction="coulomb"), ContactLaw(limiting_shear=0.07),
+                                 ContactLaw(fast_quadrature=False), ContactLaw(compiled=False)])
+def test_laws_the_kernel_does_not_cover_use_numpy(law):
+    _sc, con, _q, _qt = _scene(law=law, axialForce=1300.0)
+    assert con._compiled is None
