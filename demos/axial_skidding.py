@@ -45,14 +45,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="short runs (0.05 s each)")
     parser.add_argument("--loads", default="200,400,700,1000,1300,1700,2200,3000", help="axial loads, N")
+    parser.add_argument("--time", default=None,
+                        help="simulated time per load, s: one value for all loads or one per load "
+                             "(default: 2 s below 1.5 kN, where the ball axes reorient slowly; 0.3 s above)")
     parser.add_argument("--out", default="out/axial_skidding")
     args = parser.parse_args()
     loads = [float(v) for v in args.loads.split(",")]
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    for fa in loads:
-        sim_time = 0.05 if args.quick else (1.0 if fa < 700 else 0.5 if fa < 1500 else 0.3)
+    times = [float(v) for v in args.time.split(",")] if args.time else None
+    if times is not None and len(times) not in (1, len(loads)):
+        parser.error("--time takes one value or one per load")
+    for i, fa in enumerate(loads):
+        if times is not None:
+            sim_time = times[0] if len(times) == 1 else times[i]
+        else:
+            sim_time = 0.05 if args.quick else (2.0 if fa < 1500 else 0.3)
         start = time.perf_counter()
         summary, info = run(fa, sim_time)
         rows.append(dict(axial_N=fa, time_s=sim_time, wall_s=time.perf_counter() - start, steps=info.steps, **summary))
