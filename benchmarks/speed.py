@@ -82,7 +82,7 @@ def main():
     med = {k: float(np.median(v)) for k, v in walls.items()}
     per = lambda w: w / args.time * 0.1  # noqa: E731
     print(f"| scene | settings | wall per 0.1 s simulated (median of {args.repeat}) |")
-    print(f"|---|---|---:|")
+    print("|---|---|---:|")
     print(f"| exudyn-bearing, reference bearing, full EHD | generalized-alpha, step {info.solver['step']:g} s, "
           f"{info.newton_iterations} Newton its / {info.steps} steps | {per(med['ours']):.2f} s |")
     print(f"| exudyn-bearing, numpy contacts | same, {info_numpy.newton_iterations} Newton its | {per(med['numpy']):.2f} s |")

@@ -42,7 +42,6 @@ _BETA_STEP = float(_tr._FAST_BETA_STEP)
 _PSI_MIN = 1e-12  # the fast rule's ψ floor (keeps G(ψ) finite at the pole)
 
 
-
 def crook_tables(order: int = 16):
     """The fast rule's node tables (:func:`contact.traction._fast_tables`): ray angles and
     weights (float64), radial nodes and weights in float32 and float64 (same values):

@@ -13,10 +13,9 @@ import json
 import time
 from pathlib import Path
 
-import numpy as np
 import exudyn as exu
 
-from exudyn_bearing import REFERENCE_BEARING, races
+from exudyn_bearing import races
 from exudyn_bearing.builder import CreateAngularContactBearing
 from exudyn_bearing.runner import SolverSettings, run_solver
 

@@ -137,7 +137,7 @@ class CompiledForces:
 
     def _arrays(self, bsz):
         if bsz not in self._work:
-            z, n = self.balls.shape[0], self.con.n_nodes
+            z = self.balls.shape[0]
             self._work[bsz] = dict(
                 ro=np.empty((bsz, 2, 3)), rr=np.empty((bsz, 2, 3, 3)), rv=np.empty((bsz, 2, 3)),
                 rw=np.empty((bsz, 2, 3)), force=np.empty((bsz, 2, z, 3)), moment=np.empty((bsz, 2, z, 3)),

@@ -219,22 +219,16 @@ class BearingConnector:
         """
         return self.forces(t, *self.decode(q, q_t), details=details)
 
-    def forces(self, t, pos, rot, vel, omega_local, details=False, split=False):
-        """Generalized forces from decoded node states (see :meth:`decode`).
-
-        With ``split`` returns (per-slot forces with the ball-caused race and cage parts
-        left out, per-ball contributions to the race/cage slots of shape
-        (Z, n_nodes, 6)): the ball rows depend only on their own ball, which the block
-        Jacobian uses.
-        """
+    def forces(self, t, pos, rot, vel, omega_local, details=False):
+        """Generalized forces from decoded node states (see :meth:`decode`): the force
+        vector (6 per node slot) or, with ``details``, the :class:`ConnectorState`."""
         omega = np.einsum("nij,nj->ni", rot, omega_local)
         if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel)) and np.all(np.isfinite(omega))):
             # a Newton iterate or explicit stage blew up: NaN forces let Exudyn reject the
             # step (and retry smaller); run_solver reports the first occurrence if it fails
             if self.first_non_finite is None:
                 self.first_non_finite = self._non_finite(t, pos, vel, omega)
-            nan = np.full(6 * self.n_nodes, np.nan)
-            return (nan.reshape(-1, 6), np.full((self.z, self.n_nodes, 6), 0.0)) if split else nan
+            return np.full(6 * self.n_nodes, np.nan)
         out, react, pen, load, parts = self._batch_forces(t, pos[None], rot[None], vel[None], omega[None],
                                                           details=details)
         out, react, pen, load = out[0], react[0], pen[0].ravel(), load[0].ravel()
@@ -249,10 +243,7 @@ class BearingConnector:
                     f"{pen[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the ball "
                     f"diameter (Q = {load[deepest]:.4g} N); the load is beyond what the bearing "
                     "can carry")
-            nan = np.full(6 * self.n_nodes, np.nan)
-            return (nan.reshape(-1, 6), np.zeros((self.z, self.n_nodes, 6))) if split else nan
-        if split:
-            return out, react
+            return np.full(6 * self.n_nodes, np.nan)
         out = out + react.sum(axis=0)
         if not details:
             return out.ravel()

@@ -39,6 +39,9 @@ class SolverSettings:
     jacobian : {'block', 'exudyn'}
         Implicit solvers: the connector's block finite-difference Jacobian or Exudyn's
         own numerical one.
+    newton_contractivity : float
+        Implicit solvers: modified Newton recomputes the Jacobian when an iteration reduces
+        the residual by less than this factor (Exudyn's ``modifiedNewtonContractivity``).
     output_step : float
         Period of the recorded states, s.
     """
@@ -50,6 +53,7 @@ class SolverSettings:
     absolute_tolerance: float = 1e-6
     jacobian: str = "block"
     output_step: float = 1e-4
+    newton_contractivity: float = 0.5
 
     def __post_init__(self) -> None:
         if self.solver not in SOLVERS:
@@ -60,6 +64,8 @@ class SolverSettings:
                 raise ValueError(f"{name} must be positive, got {value!r}")
         if not 0.0 <= self.spectral_radius <= 1.0:
             raise ValueError(f"spectral_radius must lie in [0, 1], got {self.spectral_radius!r}")
+        if not 0.0 < self.newton_contractivity < 1.0:
+            raise ValueError(f"newton_contractivity must lie in (0, 1), got {self.newton_contractivity!r}")
         if self.jacobian not in ("block", "exudyn"):
             raise ValueError(f"jacobian must be 'block' or 'exudyn', got {self.jacobian!r}")
 
@@ -103,6 +109,7 @@ def _exudyn_settings(settings: SolverSettings, end_time: float):
         ti.newton.relativeTolerance = settings.relative_tolerance
         ti.newton.absoluteTolerance = settings.absolute_tolerance
         ti.newton.useModifiedNewton = True
+        ti.newton.modifiedNewtonContractivity = settings.newton_contractivity
     else:
         ti.solverType = exu.DynamicSolverType.RK44 if settings.solver == "rk44" else exu.DynamicSolverType.DOPRI5
         ti.explicit.useLieGroupIntegration = True

@@ -101,7 +101,8 @@ def _scene(law=ContactLaw(), **kw):
     rng = np.random.default_rng(5)
     con = brg.connector
     # generic state: every contact slides and spins, positions off the quasi-static ones
-    return sc, con, q[idx] + con.reference + rng.normal(0, 1e-6, idx.size), qt[idx] * (1 + rng.normal(0, 1e-3, idx.size))
+    q_abs = q[idx] + con.reference + rng.normal(0, 1e-6, idx.size)
+    return sc, con, q_abs, qt[idx] * (1 + rng.normal(0, 1e-3, idx.size))
 
 
 SCENES = {

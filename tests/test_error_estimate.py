@@ -19,3 +19,13 @@ def test_half_step_estimate_bounds_the_error_against_a_finer_run():
         # order-4 explicit: the error of h is ~16/15 of |x(h) - x(h/2)|; allow a factor 3
         assert actual <= 3 * est[key] + 1e-9, key
     assert "error_estimate" in run.to_dict()
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    (dict(solver="euler"), "solver"), (dict(step=0.0), "step"), (dict(step=float("nan")), "step"),
+    (dict(spectral_radius=1.5), "spectral_radius"), (dict(relative_tolerance=-1e-6), "relative_tolerance"),
+    (dict(jacobian="analytic"), "jacobian"), (dict(newton_contractivity=1.0), "newton_contractivity"),
+    (dict(newton_contractivity=0.0), "newton_contractivity")])
+def test_solver_settings_reject_bad_values(kwargs, name):
+    with pytest.raises(ValueError, match=name):
+        SolverSettings(**kwargs)
