@@ -1,6 +1,6 @@
 """Stiff and extreme cases (issue 4): each either finishes with a finite, physically
 bounded state or stops with a BearingSimulationError naming what failed. Short simulated
-times here (1-4 ms); longer runs of these cases are not benchmarked yet.
+times here (1-4 ms); the full cases (10-60 ms) are in ``benchmarks/extreme.py``.
 
 Bounds come from independent numbers: the applied loads, the centrifugal force
 m r_p w_c², the prescribed speed ramp, and the kinetic energy of balls rolling at the
