@@ -17,10 +17,11 @@ import exudyn as exu
 
 from exudyn_bearing import races
 from exudyn_bearing.builder import CreateAngularContactBearing
+from exudyn_bearing.errors import BearingSimulationError
 from exudyn_bearing.runner import SolverSettings, run_solver
 
 
-def run(axial, sim_time, drag=True):
+def run(axial, sim_time, drag=True, step=1e-4):
     """One scene: returns the summary over the last third of the run and the run info."""
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
@@ -28,7 +29,7 @@ def run(axial, sim_time, drag=True):
     bearing = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800), outerRace=races.Fixed(),
                                           axialForce=axial, show=False, **kwargs)
     mbs.Assemble()
-    info = run_solver(mbs, [bearing], sim_time, SolverSettings(output_step=1e-3))
+    info = run_solver(mbs, [bearing], sim_time, SolverSettings(step=step, output_step=1e-3))
     return bearing.Results(mbs).summary(), info
 
 
@@ -47,12 +48,13 @@ def main():
     parser.add_argument("--time", default=None,
                         help="simulated time per load, s: one value for all loads or one per load "
                              "(default: 2 s below 1.5 kN, where the ball axes reorient slowly; 0.3 s above)")
+    parser.add_argument("--step", type=float, default=1e-4, help="time step, s")
     parser.add_argument("--out", default="out/axial_skidding")
     args = parser.parse_args()
     loads = [float(v) for v in args.loads.split(",")]
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    rows = []
+    rows, failed = [], []
     times = [float(v) for v in args.time.split(",")] if args.time else None
     if times is not None and len(times) not in (1, len(loads)):
         parser.error("--time takes one value or one per load")
@@ -62,12 +64,18 @@ def main():
         else:
             sim_time = 0.05 if args.quick else (2.0 if fa < 1500 else 0.3)
         start = time.perf_counter()
-        summary, info = run(fa, sim_time)
+        try:
+            summary, info = run(fa, sim_time, step=args.step)
+        except BearingSimulationError as err:  # report the failed point, go on with the others
+            print(f"F_a {fa:6.0f} N: FAILED after {time.perf_counter() - start:.0f} s: {err}", flush=True)
+            failed.append((fa, str(err)))
+            continue
         rows.append(dict(axial_N=fa, time_s=sim_time, wall_s=time.perf_counter() - start, steps=info.steps, **summary))
         r = rows[-1]
         print(f"F_a {fa:6.0f} N: kinematic slip {r['kinematic_cage_slip_percent']:7.3f} %, P19 {r['cage_slip_percent']:7.3f} %, "
               f"beta_XZ {r['attitude_xz_deg']:5.1f} deg, beta_YZ {r['attitude_yz_deg']:5.2f} deg, "
               f"settled {r['settled']}, {sim_time} s simulated in {r['wall_s']:.0f} s", flush=True)
+    loads = [r["axial_N"] for r in rows]  # the points that ran through
     kin = [r["kinematic_cage_slip_percent"] for r in rows]
     p19 = [r["cage_slip_percent"] for r in rows]
     f_kin, f_p19 = crossing(loads, kin), crossing(loads, p19)
@@ -77,6 +85,8 @@ def main():
         lines.append(f"| {r['axial_N']:.0f} | {r['kinematic_cage_slip_percent']:.3f} | {r['cage_slip_percent']:.3f} | "
                      f"{r['attitude_xz_deg']:.2f} | {r['attitude_yz_deg']:.2f} | {'yes' if r['settled'] else 'no'} | "
                      f"{r['time_s']:g} | {r['wall_s']:.0f} |")
+    for fa, err in failed:
+        lines.append(f"| {fa:.0f} | failed: {err} | | | | | | |")
     lines.append("")
     lines.append(f"Kinematic cage slip crosses 1 % at F_a = {f_kin:.0f} N" if f_kin else "Kinematic cage slip does not cross 1 % in this range")
     lines.append("(paper, fixed 40 deg angles and P19 cage slip: about 1.3 kN).")
@@ -86,7 +96,7 @@ def main():
     text = "\n".join(lines)
     print(text)
     (out / "axial_skidding.md").write_text(text + "\n")
-    (out / "axial_skidding.json").write_text(json.dumps(rows, indent=1))
+    (out / "axial_skidding.json").write_text(json.dumps(rows + [dict(axial_N=fa, failed=err) for fa, err in failed], indent=1))
     try:
         from exudyn_bearing.plots import plot_skid_curve
         plot_skid_curve(loads, kin, p19, [r["attitude_xz_deg"] for r in rows], [r["attitude_yz_deg"] for r in rows],
