@@ -406,9 +406,10 @@ def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ba
 @njit(cache=True, error_model="numpy")
 def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pitch_radius, clearance,
                   stiffness, damping, axis, origin, drag_factor, cage_force, drag_force):
-    """Cage forces (``kind`` 1: rigid cage pockets, 2: spring chain P9/P10, 0: none) and
-    drag forces (``drag_factor`` = 1/2 C_D rho pi r², 0: none) on the balls of B states,
-    as :mod:`contact.cage`; written into ``cage_force``, ``drag_force`` (B, Z, 3)."""
+    """Cage forces (``kind`` 1: rigid cage pockets, MODEL.md §1; 2: spring chain P9/P10;
+    0: none) and drag forces (MODEL.md §8, ``drag_factor`` = 1/2 C_D rho pi r², 0: none) on
+    the balls of B states, as :mod:`contact.cage`; written into ``cage_force``,
+    ``drag_force`` (B, Z, 3)."""
     nb, z = c.shape[0], c.shape[1]
     gap = 0.5 * clearance
     free = 2.0 * pitch_radius * math.sin(math.pi / z)
@@ -419,15 +420,14 @@ def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pit
                 drag_force[ib, j, i] = 0.0
         if kind == 1:
             R = cage_r[ib]
+            arm = np.empty(3)  # pocket centre relative to the cage origin
+            e = np.empty(3)  # pocket's circumferential direction
             for j in range(z):
                 cs, sn = math.cos(pocket_angles[j]), math.sin(pocket_angles[j])
-                arm = np.empty(3)
-                e = np.empty(3)
                 for i in range(3):
                     arm[i] = pitch_radius * (R[i, 0] * cs + R[i, 1] * sn)
                     e[i] = -R[i, 0] * sn + R[i, 1] * cs
                 s = 0.0
-                s_dot = 0.0
                 for i in range(3):
                     s += (c[ib, j, i] - cage_o[ib, i] - arm[i]) * e[i]
                 wxa0 = cage_w[ib, 1] * arm[2] - cage_w[ib, 2] * arm[1]

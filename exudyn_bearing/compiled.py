@@ -78,10 +78,12 @@ def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, d
         for j in range(balls.shape[0]):
             sb = balls[j]
             A = rot[ib, sb]
-            m = moment[ib, 0, j] + moment[ib, 1, j]
+            m0 = moment[ib, 0, j, 0] + moment[ib, 1, j, 0]
+            m1 = moment[ib, 0, j, 1] + moment[ib, 1, j, 1]
+            m2 = moment[ib, 0, j, 2] + moment[ib, 1, j, 2]
             for i in range(3):
                 out[ib, sb, i] = force[ib, 0, j, i] + force[ib, 1, j, i] + cage_force[ib, j, i] + drag_force[ib, j, i]
-                out[ib, sb, 3 + i] = A[0, i] * m[0] + A[1, i] * m[1] + A[2, i] * m[2]
+                out[ib, sb, 3 + i] = A[0, i] * m0 + A[1, i] * m1 + A[2, i] * m2
             for k in range(2):
                 s = slots[k]
                 if s >= 0:  # the race gets -F at p and -M_z n: about its node -(lever x F + M)
