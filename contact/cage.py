@@ -10,7 +10,7 @@ import numpy as np
 
 from .kinematics import cross
 
-__all__ = ["pocket_forces", "spring_chain_forces", "drag_forces"]
+__all__ = ["pocket_forces", "spring_chain_forces", "land_forces", "drag_forces"]
 
 
 def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_velocity, cage_omega,
@@ -69,6 +69,39 @@ def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
     free = 2.0 * pitch_radius * np.sin(np.pi / c.shape[-2])
     f = (stiffness * (length - free) / length)[..., None] * chord  # pulls ball i towards i+1 when stretched
     return f - np.roll(f, 1, axis=-2)
+
+
+def land_forces(cage_origin, cage_velocity, race_origin, race_velocity, axis, radial_clearance, stiffness,
+                damping):
+    """Guiding-land contact of a race-guided cage (MODEL.md §1), force on the cage (..., 3), N.
+
+    The cage ring runs in the race's guiding land (a cylinder about ``axis``) with radial
+    play g = ``radial_clearance``. With the eccentricity e (the cage centre's offset from
+    the race centre, projected on the bearing plane) and n = e/|e|, the force on the cage
+    is -max(k (|e| - g) + c d|e|/dt, 0) n when |e| > g (a land pushes, never pulls), zero
+    otherwise; the race receives the opposite force. Radial, through both centres: no
+    moment about the cage centre. Land friction is not modelled.
+
+    Parameters
+    ----------
+    cage_origin, cage_velocity, race_origin, race_velocity : ndarray, (..., 3)
+        m, m/s (the race velocity of its frame origin).
+    axis : ndarray, (..., 3)
+        Unit race axis.
+    radial_clearance : float
+        g, m (half the diametral guiding clearance).
+    stiffness, damping : float
+        N/m, N s/m.
+    """
+    axis = np.asarray(axis, dtype=float)
+    d = np.asarray(cage_origin, dtype=float) - race_origin
+    e_vec = d - np.einsum("...j,...j->...", d, axis)[..., None] * axis
+    e = np.linalg.norm(e_vec, axis=-1)
+    n = e_vec / np.where(e > 0, e, 1.0)[..., None]
+    e_dot = np.einsum("...j,...j->...", np.asarray(cage_velocity, dtype=float) - race_velocity, n)
+    magnitude = np.where(e > radial_clearance, np.maximum(stiffness * (e - radial_clearance) + damping * e_dot, 0.0),
+                         0.0)
+    return -magnitude[..., None] * n
 
 
 def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius):

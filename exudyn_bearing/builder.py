@@ -142,6 +142,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     contactLaw : contact.ballrace.ContactLaw
         Normal, traction and spin-moment physics of the ball–race contacts.
     cage : CageModel
+        Rigid cage (default: centred by the outer race land, 0.4 mm diametral play),
+        the paper's spring chain, or none.
     ballDrag : BallDrag or None
         Sphere drag on the balls' orbital motion (MODEL.md §8); None: off.
     innerRaceDisplacement : (dx, dy, dz), optional
@@ -253,7 +255,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     cage_body = cage_node = None
     if cage.kind == "rigid":
         width, thick = bearing.ball_diameter, 0.3 * bearing.ball_diameter
-        mass = cage.mass or 8500.0 * 2 * math.pi * bearing.pitch_radius * thick * width * 0.5
+        mass = cage.mass_for(bearing)
         i_r, i_a = _ring_inertia(mass, bearing.pitch_radius - thick / 2, bearing.pitch_radius + thick / 2, width)
         d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
                                 referencePosition=origin, referenceRotationMatrix=frame,

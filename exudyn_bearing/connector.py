@@ -39,6 +39,20 @@ class CageModel:
     mass : float or None
         Cage mass, kg; None: a brass ring of width D and thickness 0.3 D, half of it
         pockets.
+    guidance : {'outer', 'inner', 'balls'}
+        Rigid cage: what centres it radially. 'outer'/'inner': the cage ring runs in that
+        race's guiding land with diametral play ``guide_clearance`` (contact stiffness
+        ``guide_stiffness``, damping ``guide_damping``; radial force through the centres,
+        no land friction). 'balls': only the pockets hold it; the ring can then drift
+        radially without bound — at medium axial loads (0.7–1 kN at 1800 rpm) the skidding
+        balls drive a growing whirl that reaches millimetres by 0.5 s and wrecks the run.
+    guide_clearance : float
+        Diametral land play, m (default 0.4 mm, a typical value for a ~155 mm pitch
+        diameter; the paper has no cage body).
+    guide_stiffness : float
+        Land contact stiffness, N/m.
+    guide_damping : float or None
+        N s/m; None: 20 % of critical for the cage mass on ``guide_stiffness``.
     """
 
     kind: str = "rigid"
@@ -46,21 +60,39 @@ class CageModel:
     damping: float | None = None
     clearance: float = 0.0
     mass: float | None = None
+    guidance: str = "outer"
+    guide_clearance: float = 0.4e-3
+    guide_stiffness: float = 1e7
+    guide_damping: float | None = None
 
     def __post_init__(self) -> None:
         if self.kind not in ("rigid", "spring-chain", "none"):
             raise ValueError(f"kind must be 'rigid', 'spring-chain' or 'none', got {self.kind!r}")
-        for name in ("stiffness", "clearance"):
+        if self.guidance not in ("outer", "inner", "balls"):
+            raise ValueError(f"guidance must be 'outer', 'inner' or 'balls', got {self.guidance!r}")
+        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
-        if self.damping is not None and not (np.isfinite(self.damping) and self.damping >= 0):
-            raise ValueError(f"damping must be finite and >= 0, got {self.damping!r}")
+        for name in ("damping", "guide_damping"):
+            value = getattr(self, name)
+            if value is not None and not (np.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
         if self.mass is not None and not (np.isfinite(self.mass) and self.mass > 0):
             raise ValueError(f"mass must be positive, got {self.mass!r}")
 
     def damping_for(self, ball_mass: float) -> float:
         return 2 * 0.05 * np.sqrt(self.stiffness * ball_mass) if self.damping is None else self.damping
+
+    def mass_for(self, bearing: Bearing) -> float:
+        """Cage mass, kg (``mass`` or the default brass ring)."""
+        d = bearing.ball_diameter
+        return self.mass or 8500.0 * 2 * np.pi * bearing.pitch_radius * (0.3 * d) * d * 0.5
+
+    @property
+    def guided(self) -> bool:
+        """A rigid cage centred by a race land."""
+        return self.kind == "rigid" and self.guidance != "balls"
 
 
 @dataclass
@@ -83,6 +115,8 @@ class ConnectorState:
     frame_rotation: np.ndarray  #: bearing (outer race) frame -> global
     frame_origin: np.ndarray
     generalized: np.ndarray = field(repr=False, default=None)
+    cage_eccentricity: float = 0.0  #: rigid cage centre off its guiding (else the outer) race's axis, m
+    cage_land_force: np.ndarray = None  #: guiding land on the cage, (3,), N (None: not guided)
 
 
 def _take(record, part):
@@ -157,6 +191,12 @@ class BearingConnector:
                                   self.signs, bearing.effective_modulus, bearing.ball_mass)
         self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
         self.cage_damping = cage.damping_for(bearing.ball_mass)
+        self.guide = None  # (race, radial play m, stiffness N/m, damping N s/m) of a land-guided cage
+        if cage.guided:
+            damping = cage.guide_damping
+            if damping is None:
+                damping = 2 * 0.2 * np.sqrt(cage.guide_stiffness * cage.mass_for(bearing))
+            self.guide = (cage.guidance, 0.5 * cage.guide_clearance, cage.guide_stiffness, damping)
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
         self._params_cache = {}
@@ -255,7 +295,7 @@ class BearingConnector:
         return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
                               cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
                               race_omega["inner"][0], race_omega["outer"][0],
-                              self.rotation, self.origin, out.ravel())
+                              self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega))
 
     def _batch_forces(self, t, pos, rot, vel, omega, details=False):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
@@ -271,6 +311,8 @@ class BearingConnector:
             out, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
             pen = parts[0].penetration.reshape(pos.shape[0], 2, self.z)
             load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
+        if self.guide is not None:
+            self._add_land_force(t, pos, rot, vel, omega, out)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
         for slot, what in self.held.items():
@@ -286,6 +328,45 @@ class BearingConnector:
             w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
             out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
         return out, react, pen, load, parts
+
+    def land_force(self, t, pos, rot, vel, omega):
+        """Guiding-land force on the cage (B, 3), N, the guiding race's slot (or None) and
+        the cage's eccentricity (B,), m, for a batch of node states (omega GLOBAL);
+        :func:`contact.cage.land_forces`."""
+        race, play, stiffness, damping = self.guide
+        origin, rotation, v_race, _, slot = self._race_frame(race, t, pos, vel, rot, omega)
+        s = self.layout["cage"]
+        force = cage_physics.land_forces(pos[:, s], vel[:, s], origin, v_race, rotation[..., 2], play, stiffness,
+                                         damping)
+        return force, slot, self._eccentricity(pos[:, s], origin, rotation[..., 2])
+
+    @staticmethod
+    def _eccentricity(point, origin, axis):
+        """Distance of ``point`` from the axis through ``origin``, (B,), m."""
+        d = point - origin
+        return np.linalg.norm(d - np.einsum("bj,bj->b", d, axis)[:, None] * axis, axis=-1)
+
+    def _land_details(self, t, pos, rot, vel, omega):
+        """(cage eccentricity m, land force (3,) N or None) of one state for
+        :class:`ConnectorState`; an unguided rigid cage's eccentricity is measured from the
+        outer race axis."""
+        if self.guide is None:
+            if self.cage.kind != "rigid":
+                return 0.0, None
+            origin, rotation, _, _, _ = self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])
+            return float(self._eccentricity(pos[None, self.layout["cage"]], origin, rotation[..., 2])[0]), None
+        force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
+        return float(e[0]), force[0]
+
+    def _add_land_force(self, t, pos, rot, vel, omega, out):
+        """Adds the guiding-land force to the cage slot and its reaction (at the cage centre)
+        to the guiding race's slot, in place."""
+        force, slot, _ = self.land_force(t, pos, rot, vel, omega)
+        out[:, self.layout["cage"], :3] += force
+        if slot is not None:
+            out[:, slot, :3] -= force
+            torque = cross(pos[:, self.layout["cage"]] - pos[:, slot], -force)
+            out[:, slot, 3:] += np.einsum("bji,bj->bi", rot[:, slot], torque)
 
     def _numpy_forces(self, t, pos, rot, vel, omega):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of

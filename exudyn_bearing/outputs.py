@@ -65,6 +65,10 @@ class BearingResults:
     inner_race_moment: np.ndarray = None
     #: force all balls apply to the outer race (the housing reaction), bearing frame, (T, 3), N
     outer_race_force: np.ndarray = None
+    #: rigid cage centre off its guiding race's axis (unguided: the outer race's), (T,), m
+    cage_eccentricity: np.ndarray = None
+    #: guiding-land contact force on the cage, magnitude (T,), N
+    cage_land_force: np.ndarray = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -114,8 +118,12 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     contacts = {race: {f: np.zeros((steps, z)) for f in _CONTACT_FIELDS} for race in ("inner", "outer")}
     race_force = {race: np.zeros((steps, 3)) for race in ("inner", "outer")}
     inner_moment = np.zeros((steps, 3))
+    land = np.zeros((steps, 2))  # cage eccentricity, land force
     for k in range(steps):
         s = con.evaluate(time[k], q[k], q_t[k], details=True)
+        land[k, 0] = s.cage_eccentricity
+        if s.cage_land_force is not None:
+            land[k, 1] = np.linalg.norm(s.cage_land_force)
         rel = (s.ball_position - origin) @ frame  # bearing frame
         vel = s.ball_velocity @ frame
         omega = s.ball_omega @ frame
@@ -158,4 +166,4 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     return BearingResults(np.asarray(time), arrays["inner_speed"], arrays["outer_speed"], cage, nominal,
                           cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
                           w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
-                          race_force["inner"], inner_moment, race_force["outer"])
+                          race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1])

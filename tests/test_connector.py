@@ -25,6 +25,7 @@ check of the RotVecLG torque convention in Exudyn itself.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -452,3 +453,68 @@ def test_exudyn_rotveclg_torque_convention():
     p1, l1 = momenta()
     np.testing.assert_allclose(p1 - p0, force * end, rtol=1e-10, atol=1e-12)
     np.testing.assert_allclose(l1 - l0, tau * end, rtol=0, atol=1e-9 * np.linalg.norm(tau * end))  # observed 3e-15 N m s
+
+
+@pytest.mark.parametrize("guidance", ["outer", "inner"])
+def test_land_guidance_force_by_hand(guidance):
+    """A land-guided cage pushed past its radial play: the guiding land's force on the cage
+    (MODEL.md §1; penalty k (e - g) + c de/dt through the centres) and its reaction on the
+    guiding race node, with the race's moment about its node, against a hand computation.
+    The land term is isolated as (guided) - (unguided, guidance='balls') on the same state;
+    the sum of all internal forces and moments still vanishes with it."""
+    cage_model = CageModel(guidance=guidance, guide_clearance=0.4e-3, guide_stiffness=2e7, guide_damping=300.0)
+    forces, handles = {}, {}
+    for g in (guidance, "balls"):
+        sc = exu.SystemContainer()
+        mbs = sc.AddSystem()
+        position, rotation = _frame()
+        handles[g] = CreateAngularContactBearing(mbs, BRG, LUB, innerRace=races.Free(1800.0),
+                                                 outerRace=races.Free(0.0), innerRaceDisplacement=(1e-6, 2e-6, 10e-6),
+                                                 cage=replace(cage_model, guidance=g), ballDrag=None, position=position,
+                                                 rotationMatrix=rotation, show=False)
+        mbs.Assemble()
+        q, q_t = generic_state(mbs, handles[g], seed=11)
+        con = handles[g].connector
+        qq, vv = q.reshape(-1, 6), q_t.reshape(-1, 6)
+        cage = con.layout["cage"]
+        # cage centre 0.23 mm off the bearing axis (play 0.2 mm), moving outwards at 0.04 m/s
+        radial = rotation @ np.array([math.cos(0.7), math.sin(0.7), 0.0])
+        qq[cage, :3] = position + 0.23e-3 * radial + 1e-5 * rotation[:, 2]
+        vv[cage, :3] = 0.04 * radial + 0.01 * rotation[:, 1]
+        forces[g] = con.evaluate(0.0, qq.ravel(), vv.ravel()).reshape(-1, 6)
+    con = handles[guidance].connector
+    land = forces[guidance] - forces["balls"]
+
+    race = con.layout[guidance]
+    rot_race = Rotation.from_rotvec(qq[race, 3:]).as_matrix()
+    axis = rot_race[:, 2]  # Free races: the node frame is the race frame
+    d = qq[cage, :3] - qq[race, :3]
+    e_vec = d - (d @ axis) * axis
+    e = np.linalg.norm(e_vec)
+    n = e_vec / e
+    e_dot = (vv[cage, :3] - vv[race, :3]) @ n
+    f_cage = -(2e7 * (e - 0.2e-3) + 300.0 * e_dot) * n
+    assert 500.0 < np.linalg.norm(f_cage) < 2000.0  # engaged, damping term visible
+    tau_race = np.cross(qq[cage, :3] - qq[race, :3], -f_cage)
+    scale = np.linalg.norm(f_cage)
+    np.testing.assert_allclose(land[cage, :3], f_cage, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(land[cage, 3:], 0.0, atol=1e-9 * scale * BRG.pitch_radius)
+    np.testing.assert_allclose(land[race, :3], -f_cage, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(land[race, 3:], rot_race.T @ tau_race, rtol=0, atol=1e-9 * np.linalg.norm(tau_race))
+    others = [s for s in range(len(land)) if s not in (cage, race)]
+    assert np.all(land[others] == 0.0)
+
+    # internal forces only (no drag, no applied load): momentum balance with the land term
+    gen = forces[guidance]
+    rot = [Rotation.from_rotvec(qq[s, 3:]).as_matrix() for s in range(len(qq))]
+    torques = np.array([rot[s] @ gen[s, 3:] for s in range(len(qq))])
+    moments = np.cross(qq[:, :3], gen[:, :3]) + torques
+    assert np.linalg.norm(gen[:, :3].sum(axis=0)) <= 1e-9 * np.abs(gen[:, :3]).sum()
+    assert np.linalg.norm(moments.sum(axis=0)) <= 1e-9 * np.linalg.norm(moments, axis=1).sum()
+
+    # a cage inside its play feels no land
+    qq[cage, :3] = position + 0.15e-3 * radial
+    state = con.evaluate(0.0, qq.ravel(), vv.ravel(), details=True)
+    d = qq[cage, :3] - qq[race, :3]
+    assert np.all(state.cage_land_force == 0.0)
+    assert abs(state.cage_eccentricity - np.linalg.norm(d - (d @ axis) * axis)) < 1e-12
