@@ -13,6 +13,7 @@ right-hand side spends ~1 ms of its ~1.7 ms in numpy bookkeeping on arrays of 32
 * :func:`cage_and_drag` — rigid-cage pocket forces, the paper's spring chain (P9, P10) and
   ball drag (§8) as :mod:`contact.cage`;
 * :func:`race_contacts_parallel` — the same with the contacts spread over numba's threads;
+* :func:`land_forces` — the guiding land of a race-guided cage as :mod:`contact.cage`;
 * :func:`crook_fast` — the traction rule alone, vectorized (for tests and benchmarks).
 
 Everything is in one global frame and SI units. ``tests/test_compiled.py`` checks every
@@ -21,14 +22,24 @@ output against the numpy functions on the same states.
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
-from numba import njit, prange
+
+# GNU OpenMP threads (numba's parallel layer) spin ~300 000 times while they wait for work;
+# when other processes share the cores (a skid map, a second run) the spinning threads take
+# their CPU. Two runs side by side on 2 cores, 0.02 s simulated each: 10.5-11.7 s with that
+# default, 1.9-2.0 s with a spin count of 3000 (alone: 1.30 vs 1.2 s). Must be set before the
+# OpenMP runtime loads; a user's own OMP_WAIT_POLICY or GOMP_SPINCOUNT wins.
+if "OMP_WAIT_POLICY" not in os.environ:
+    os.environ.setdefault("GOMP_SPINCOUNT", "3000")
+
+from numba import njit, prange  # noqa: E402
 
 from . import traction as _tr
 
 __all__ = ["crook_fast", "crook_tables", "race_contacts", "race_contacts_parallel", "cage_and_drag",
-           "rotation_matrices"]
+           "land_forces", "rotation_matrices"]
 
 _EPS_CAP = float(_tr._FAST_EPS_CAP)
 _LOG2_EPS_CAP = math.log2(_EPS_CAP)
@@ -401,6 +412,28 @@ def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ba
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+
+
+@njit(cache=True, error_model="numpy")
+def land_forces(cage_o, cage_v, race_o, race_v, axis, play, stiffness, damping, force, eccentricity):
+    """Guiding-land force on a race-guided cage for B states (cage arrays (B, 3); race
+    arrays (B, 3) or (1, 3) for all states) into ``force`` (B, 3), N, and the cage
+    eccentricity into ``eccentricity`` (B,), m; as :func:`contact.cage.land_forces`
+    (MODEL.md §1)."""
+    for b in range(cage_o.shape[0]):
+        r = b if race_o.shape[0] > 1 else 0
+        d0, d1, d2 = cage_o[b, 0] - race_o[r, 0], cage_o[b, 1] - race_o[r, 1], cage_o[b, 2] - race_o[r, 2]
+        da = d0 * axis[r, 0] + d1 * axis[r, 1] + d2 * axis[r, 2]
+        e0, e1, e2 = d0 - da * axis[r, 0], d1 - da * axis[r, 1], d2 - da * axis[r, 2]
+        e = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+        eccentricity[b] = e
+        force[b, 0] = force[b, 1] = force[b, 2] = 0.0
+        if e > play:
+            n0, n1, n2 = e0 / e, e1 / e, e2 / e
+            e_dot = ((cage_v[b, 0] - race_v[r, 0]) * n0 + (cage_v[b, 1] - race_v[r, 1]) * n1
+                     + (cage_v[b, 2] - race_v[r, 2]) * n2)
+            magnitude = max(stiffness * (e - play) + damping * e_dot, 0.0)
+            force[b, 0], force[b, 1], force[b, 2] = -magnitude * n0, -magnitude * n1, -magnitude * n2
 
 
 @njit(cache=True, error_model="numpy")

@@ -201,6 +201,14 @@ def _load_done(path: Path) -> dict:
     return done
 
 
+def _one_thread_per_worker():
+    """Pool initializer: the points already run in parallel processes, so each keeps its
+    contact kernels on one thread (more threads than cores slow every process down)."""
+    import numba
+
+    numba.set_num_threads(1)
+
+
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
              axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float = DEFAULT_TIME,
              drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
@@ -264,8 +272,8 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         else:
             # spawned, not forked: a process that has run the compiled contacts holds GNU
             # OpenMP threads, and forking it aborts the child
-            with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn")) \
-                    as pool:
+            with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn"),
+                                     initializer=_one_thread_per_worker) as pool:
                 for fut in as_completed([pool.submit(_run_point, job) for job in jobs]):
                     record(fut.result())
     order = {p.key: i for i, p in enumerate(grid)}

@@ -178,3 +178,34 @@ def test_serial_kernel_from_a_thread_equals_parallel():
 def test_laws_the_kernel_does_not_cover_use_numpy(law):
     _sc, con, _q, _qt = _scene(law=law, axialForce=1300.0)
     assert con._compiled is None
+
+
+def test_land_kernel_is_the_numpy_land_force():
+    """The guiding-land kernel against contact.cage.land_forces on random states around the
+    play (inside, engaged, separating fast enough to clip), race arrays per state and
+    shared (1, 3)."""
+    from contact.cage import land_forces
+
+    rng = np.random.default_rng(5)
+    n = 400
+    axis = rng.standard_normal((n, 3))
+    axis /= np.linalg.norm(axis, axis=1, keepdims=True)
+    race_o = rng.normal(0.0, 1e-3, (n, 3))
+    race_v = rng.normal(0.0, 0.01, (n, 3))
+    direction = rng.standard_normal((n, 3))
+    direction /= np.linalg.norm(direction, axis=1, keepdims=True)
+    offset = rng.uniform(0.0, 0.35e-3, (n, 1)) * direction
+    cage_v = rng.normal(0.0, 0.2, (n, 3))
+    play, k, c = 0.2e-3, 1e7, 400.0
+    for shared in (False, True):
+        ro, rv, ax = (race_o[:1], race_v[:1], axis[:1]) if shared else (race_o, race_v, axis)
+        cage_o = ro + offset
+        force, e = np.empty((n, 3)), np.empty(n)
+        compiled.land_forces(cage_o, cage_v, ro, rv, ax, play, k, c, force, e)
+        expected = land_forces(cage_o, cage_v, ro, rv, ax, play, k, c)
+        engaged = np.linalg.norm(expected, axis=1) > 0
+        assert 50 < engaged.sum() < n - 50  # both regimes present
+        np.testing.assert_allclose(force, expected, rtol=1e-12, atol=1e-12 * np.abs(expected).max())
+        d = cage_o - ro
+        np.testing.assert_allclose(e, np.linalg.norm(d - np.sum(d * ax, axis=1, keepdims=True) * ax, axis=1),
+                                   rtol=1e-12)
