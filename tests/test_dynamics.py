@@ -160,17 +160,22 @@ def test_combined_load_at_rest_keeps_quasi_static_loads():
 
 def test_combined_load_at_speed_matches_quasi_static_peak_without_traction():
     """Combined load at 1800 rpm (F_a 2.2 kN, F_r 2 kN) with normal forces only (no
-    traction, no drag): balls and cage keep their orbital speed, the race runs over a
+    traction, no drag, no cage): the balls keep their orbital speeds, the race runs over a
     moving load zone. The largest inner-contact load over the last 10 ms must match the
     quasi-static peak for the run's own cage speed (centrifugal force m r w_c², MODEL.md §4)
-    within 3 %. Observed: 924 N vs 909 N (+1.7 %); against the nominal-speed quasi-static
-    peak (890 N) it would be +3.8 %: the builder's pure-rolling cage speed for the actual
-    contact angles is 6 % above the nominal P19 one. Generalized-alpha 1e-4 s, 20 ms,
-    wall ~3 s."""
+    within 3 %. Observed: 911 N vs 909 N (+0.2 %); against the nominal-speed quasi-static
+    peak (890 N) it would be +2.3 %: the builder's pure-rolling cage speed for the actual
+    contact angles is 6 % above the nominal P19 one. No cage: without traction only the
+    pockets would tie the loaded and unloaded balls' different rolling speeds together,
+    and their unbalanced resultant throws the cage about (unguided 6.7 mm off centre after
+    20 ms, land-guided hammering its land with up to 725 N, peak load +3.6 %), which is
+    not what this test is about. Generalized-alpha 1e-4 s, 20 ms, wall ~3 s."""
+    from exudyn_bearing import CageModel
+
     _, mbs = _new_system()
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
                                          axialForce=2200.0, radialForce=2000.0, ballDrag=None,
-                                         contactLaw=ContactLaw(traction="none"), show=False)
+                                         contactLaw=ContactLaw(traction="none"), cage=CageModel("none"), show=False)
     mbs.Assemble()
     run_solver(mbs, [handle], 0.02, SolverSettings(output_step=2.5e-4))
     res = handle.Results(mbs)
