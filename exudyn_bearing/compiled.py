@@ -147,9 +147,29 @@ class CompiledForces:
                 drag=np.empty((bsz, z, 3)))
         return self._work[bsz]
 
-    def __call__(self, t, pos, rot, vel, omega):
+    def __call__(self, t, pos, rot, vel, omega, same_contacts=None):
         """(out (B, n, 6), react (B, Z, n, 6), penetration (B, 2, Z) m, load (B, 2, Z) N) for
-        B node states (omega GLOBAL); the race/cage parts caused by ball j are react[:, j]."""
+        B node states (omega GLOBAL); the race/cage parts caused by ball j are react[:, j].
+        ``same_contacts`` (bool, (B,)) marks states whose balls and races equal those of
+        state 0 (e.g. only the cage perturbed): their ball–race contacts are copied from
+        state 0 instead of recomputed."""
+        bsz = pos.shape[0]
+        if same_contacts is not None and np.any(same_contacts[1:]):
+            # the ball–race contacts of the distinct states only (state 0 first), then spread
+            sub = np.concatenate([[0], np.flatnonzero(~same_contacts[1:]) + 1])
+            ws = self._contacts(t, *(np.take(x, sub, axis=0) for x in (pos, rot, vel, omega)))
+            w = self._arrays(bsz)
+            same = np.flatnonzero(same_contacts)
+            for key in ("force", "moment", "penetration", "load"):
+                w[key][sub] = ws[key]
+                w[key][same] = ws[key][0]
+        else:
+            w = self._contacts(t, pos, rot, vel, omega)
+        return self._finish(np.ascontiguousarray(pos), np.ascontiguousarray(rot), np.ascontiguousarray(vel),
+                            np.ascontiguousarray(omega), w)
+
+    def _contacts(self, t, pos, rot, vel, omega):
+        """Ball–race contacts of B states into (and returns) the work arrays of size B."""
         con = self.con
         bsz = pos.shape[0]
         w = self._arrays(bsz)
@@ -169,6 +189,14 @@ class CompiledForces:
         run(c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
             *self.physics, *self.tables, w["force"], w["moment"], w["penetration"],
             w["load"])
+        return w
+
+    def _finish(self, pos, rot, vel, omega, w):
+        """Cage, drag and the generalized-force assembly of B states whose ball–race
+        contacts are in ``w``."""
+        con = self.con
+        bsz = pos.shape[0]
+        c, v = (np.take(x, self.balls, axis=1) for x in (pos, vel))
         s = con.layout["cage"] if self.cage_kind == 1 else 0  # (any slot when there is no cage body)
         cage = [np.ascontiguousarray(x[:, s]) for x in (pos, rot, vel, omega)]
         kernels.cage_and_drag(c, v, self.cage_kind, *cage, con.pocket_angles,

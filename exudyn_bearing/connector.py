@@ -300,15 +300,17 @@ class BearingConnector:
                               race_omega["inner"][0], race_omega["outer"][0],
                               self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega))
 
-    def _batch_forces(self, t, pos, rot, vel, omega, details=False):
+    def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
         to the race/cage slots (B, Z, n_nodes, 6), penetration (m) and normal load (N) of
         each contact (B, 2, Z; inner race first), and, from the numpy path, (kinematics,
         forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
-        from the compiled path, which is used unless ``details`` are asked for)."""
+        from the compiled path, which is used unless ``details`` are asked for).
+        ``same_contacts`` (compiled path): bool (B,), states whose ball–race contacts equal
+        state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`)."""
         if self._compiled is not None and not details:
-            out, react, pen, load = self._compiled(t, pos, rot, vel, omega)
+            out, react, pen, load = self._compiled(t, pos, rot, vel, omega, same_contacts)
             parts = None
         else:
             out, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
@@ -518,7 +520,12 @@ class BearingConnector:
                 (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
         if not (np.all(np.isfinite(p2[0])) and np.all(np.isfinite(v2[0])) and np.all(np.isfinite(w2[0]))):
             return np.full((n6, n6), np.nan)
-        out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2))
+        # a perturbed cage moves no ball and no race: its states reuse the base contacts
+        # (the Crook quadrature is most of an evaluation; 12 of ~31 states here)
+        cage_slot = self.layout["cage"]
+        same = np.array([False] + [cage_slot is not None and int(group[0]) == cage_slot for group, _, _ in columns])
+        out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2),
+                                                 same_contacts=same)
         d_out = (out[1:] - out[0]) / steps[:, None, None]
         d_react = (react[1:] - react[0]) / steps[:, None, None, None]
         dq = np.zeros((n6, n6))
