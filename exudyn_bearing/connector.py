@@ -47,8 +47,8 @@ class CageModel:
         radially without bound — at medium axial loads (0.7–1 kN at 1800 rpm) the skidding
         balls drive a growing whirl that reaches millimetres by 0.5 s and wrecks the run.
     guide_clearance : float
-        Diametral land play, m (default 0.4 mm, a typical value for a ~155 mm pitch
-        diameter; the paper has no cage body).
+        Diametral land play, m (default 0.4 mm: an assumed, typical order for a 155 mm
+        pitch diameter; the paper has no cage body).
     guide_stiffness : float
         Land contact stiffness, N/m.
     guide_damping : float or None
