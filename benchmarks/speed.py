@@ -46,7 +46,7 @@ def exudyn_ball_bearing(sim_time, step=1e-5):
                                 initialAngularVelocity=[0, 0, 1800 * np.pi / 30],
                                 nodeType=exu.NodeType.RotationRotationVector)
     m_inner = mbs.AddMarker(MarkerBodyRigid(bodyNumber=inner))
-    mbs.CreateForce(bodyNumber=inner, loadVector=[0, 0, 1300.0])  # pushes the inner ring axially
+    mbs.CreateForce(itemNumber=inner, loadVector=[0, 0, 1300.0])  # pushes the inner ring axially
     machines.CreateBallBearing(mbs, data, m_inner, m_outer, densityBalls=7850, densityCage=8500,
                                cageInitialAngularVelocity=[0, 0, B.cage_speed(1800 * np.pi / 30)])
     mbs.Assemble()
