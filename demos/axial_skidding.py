@@ -81,6 +81,8 @@ def main():
                              "(default: 5 s below 300 N, 2 s below 1.5 kN, where the cage and the ball axes "
                              "settle slowly; 0.3 s above)")
     parser.add_argument("--step", type=float, default=1e-4, help="time step, s")
+    parser.add_argument("--no-drag", action="store_true",
+                        help="without ball drag (MODEL.md §7: the kinematic slip should then stay near zero)")
     parser.add_argument("--out", default="out/axial_skidding")
     args = parser.parse_args()
     loads = [float(v) for v in args.loads.split(",")]
@@ -97,7 +99,7 @@ def main():
             sim_time = 0.05 if args.quick else (5.0 if fa < 300 else 2.0 if fa < 1500 else 0.3)
         start = time.perf_counter()
         try:
-            summary, info = run(fa, sim_time, step=args.step)
+            summary, info = run(fa, sim_time, drag=not args.no_drag, step=args.step)
         except BearingSimulationError as err:  # report the failed point, go on with the others
             print(f"F_a {fa:6.0f} N: FAILED after {time.perf_counter() - start:.0f} s: {err}", flush=True)
             failed.append((fa, str(err)))
