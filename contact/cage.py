@@ -10,7 +10,7 @@ import numpy as np
 
 from .kinematics import cross
 
-__all__ = ["pocket_forces", "spring_chain_forces", "land_forces", "drag_forces"]
+__all__ = ["pocket_forces", "spring_chain_forces", "radial_offset", "land_forces", "drag_forces"]
 
 
 def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_velocity, cage_omega,
@@ -71,6 +71,14 @@ def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
     return f - np.roll(f, 1, axis=-2)
 
 
+def radial_offset(point, origin, axis):
+    """Offset of ``point`` from the axis through ``origin`` (unit ``axis``), projected on
+    the plane normal to the axis, (..., 3), m."""
+    axis = np.asarray(axis, dtype=float)
+    d = np.asarray(point, dtype=float) - origin
+    return d - np.einsum("...j,...j->...", d, axis)[..., None] * axis
+
+
 def land_forces(cage_origin, cage_velocity, race_origin, race_velocity, axis, radial_clearance, stiffness,
                 damping):
     """Guiding-land contact of a race-guided cage (MODEL.md §1), force on the cage (..., 3), N.
@@ -93,9 +101,7 @@ def land_forces(cage_origin, cage_velocity, race_origin, race_velocity, axis, ra
     stiffness, damping : float
         N/m, N s/m.
     """
-    axis = np.asarray(axis, dtype=float)
-    d = np.asarray(cage_origin, dtype=float) - race_origin
-    e_vec = d - np.einsum("...j,...j->...", d, axis)[..., None] * axis
+    e_vec = radial_offset(cage_origin, race_origin, axis)
     e = np.linalg.norm(e_vec, axis=-1)
     n = e_vec / np.where(e > 0, e, 1.0)[..., None]
     e_dot = np.einsum("...j,...j->...", np.asarray(cage_velocity, dtype=float) - race_velocity, n)

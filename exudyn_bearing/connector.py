@@ -354,13 +354,7 @@ class BearingConnector:
         origin, rotation, v_race, _, slot = self._race_frame(race, t, pos, vel, rot, omega)
         force = cage_physics.land_forces(pos[:, s], vel[:, s], origin, v_race, rotation[..., 2], play, stiffness,
                                          damping)
-        return force, slot, self._eccentricity(pos[:, s], origin, rotation[..., 2])
-
-    @staticmethod
-    def _eccentricity(point, origin, axis):
-        """Distance of ``point`` from the axis through ``origin``, (B,), m."""
-        d = point - origin
-        return np.linalg.norm(d - np.einsum("bj,bj->b", d, axis)[:, None] * axis, axis=-1)
+        return force, slot, np.linalg.norm(cage_physics.radial_offset(pos[:, s], origin, rotation[..., 2]), axis=-1)
 
     def _land_details(self, t, pos, rot, vel, omega):
         """(cage eccentricity m, land force (3,) N or None) of one state for
@@ -370,7 +364,8 @@ class BearingConnector:
             if self.cage.kind != "rigid":
                 return 0.0, None
             origin, rotation, _, _, _ = self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])
-            return float(self._eccentricity(pos[None, self.layout["cage"]], origin, rotation[..., 2])[0]), None
+            return float(np.linalg.norm(cage_physics.radial_offset(pos[self.layout["cage"]], origin[0],
+                                                                   rotation[0, :, 2]))), None
         force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
         return float(e[0]), force[0]
 
