@@ -34,7 +34,9 @@ import numpy as np
 if "OMP_WAIT_POLICY" not in os.environ:
     os.environ.setdefault("GOMP_SPINCOUNT", "3000")
 
-from numba import njit, prange  # noqa: E402
+from llvmlite import ir  # noqa: E402
+from numba import njit, prange, types  # noqa: E402
+from numba.extending import intrinsic  # noqa: E402
 
 from . import traction as _tr
 
@@ -54,12 +56,12 @@ _PSI_MIN = 1e-12  # the fast rule's ψ floor (keeps G(ψ) finite at the pole)
 
 
 def crook_tables(order: int = 16):
-    """The fast rule's node tables (:func:`contact.traction._fast_tables`): ray angles and
-    weights (float64), radial nodes and weights in float32 and float64 (same values):
-    (psi, wpsi, rho32, w32, rho64, w64)."""
+    """The fast rule's node tables (:func:`contact.traction._fast_tables`): cosine and sine
+    of the ray angles and their weights (float64), radial nodes and weights in float32 and
+    float64 (same values): (cos_psi, sin_psi, wpsi, rho32, w32, rho64, w64)."""
     tab = _tr._fast_tables(int(order))
-    f64 = [np.ascontiguousarray(tab[k], dtype=np.float64) for k in ("psi", "wpsi", "rho", "w")]
-    return (*f64[:2], f64[2].astype(np.float32), f64[3].astype(np.float32), *f64[2:])
+    psi, wpsi, rho, w = (np.ascontiguousarray(tab[k], dtype=np.float64) for k in ("psi", "wpsi", "rho", "w"))
+    return np.cos(psi), np.sin(psi), wpsi, rho.astype(np.float32), w.astype(np.float32), rho, w
 
 
 # fast-math flags without 'reassoc' (the (1 + z) - 1 correction below must survive) and
@@ -67,12 +69,102 @@ def crook_tables(order: int = 16):
 _FLAGS = {"nsz", "arcp", "contract", "afn"}
 
 
+# Vectorizable float32 exp and log. The PyPI llvmlite has no SVML, so math.exp/math.log
+# stay scalar library calls and keep LLVM from vectorizing the quadrature; these Cephes
+# polynomials (expf, logf; error ~1 ulp) with bit-level scaling vectorize. Measured on
+# 32 reference-bearing contacts at order 16: 550 -> 160 us per call (benchmarks/features.py).
+@intrinsic
+def _f32_bits(typingctx, x):
+    if x != types.float32:
+        return None
+    return types.int32(types.float32), lambda context, builder, sig, args: builder.bitcast(args[0], ir.IntType(32))
+
+
+@intrinsic
+def _bits_f32(typingctx, i):
+    if i != types.int32:
+        return None
+    return types.float32(types.int32), lambda context, builder, sig, args: builder.bitcast(args[0], ir.FloatType())
+
+
+_F = np.float32
+_I = np.int32
+_F1, _FH = _F(1.0), _F(0.5)
+_ROUND = _F(1.5 * 2.0 ** 23)  # x + _ROUND - _ROUND rounds x to an integer (|x| < 2^22)
+_ROUND_BITS = _I(0x4B400000)  # bit pattern of _ROUND: bits(x + _ROUND) - _ROUND_BITS = round(x)
+_LOG2E = _F(1.4426950408889634)
+_LN2_HI, _LN2_LO = _F(0.693359375), _F(-2.12194440e-4)  # Cody–Waite split of ln 2
+_EXP_MAX = _F(88.0)
+_INF32 = _F(np.inf)
+_SQRT2_32 = _F(math.sqrt(2.0))
+_EXP_P = tuple(_F(c) for c in (1.9875691500e-4, 1.3981999507e-3, 8.3334519073e-3, 4.1665795894e-2,
+                                1.6666665459e-1, 5.0000001201e-1))
+_LOG_P = tuple(_F(c) for c in (7.0376836292e-2, -1.1514610310e-1, 1.1676998740e-1, -1.2420140846e-1,
+                                1.4249322787e-1, -1.6668057665e-1, 2.0000714765e-1, -2.4999993993e-1,
+                                3.3333331174e-1))
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _exp32(x):
+    """e^x in float32 for 0 <= x (inf above 88; Cephes expf)."""
+    p0, p1, p2, p3, p4, p5 = _EXP_P
+    v = x * _LOG2E + _ROUND
+    n = v - _ROUND
+    r = (x - n * _LN2_HI) - n * _LN2_LO
+    y = (((((p0 * r + p1) * r + p2) * r + p3) * r + p4) * r + p5) * (r * r) + r + _F1
+    scale = _bits_f32(_I((_f32_bits(v) - _ROUND_BITS + _I(127)) << _I(23)))  # 2^n
+    return _INF32 if x > _EXP_MAX else y * scale
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _log32(x):
+    """ln x in float32 for finite x >= 1 (Cephes logf)."""
+    l0, l1, l2, l3, l4, l5, l6, l7, l8 = _LOG_P
+    i = _f32_bits(x)
+    m = _bits_f32(_I((i & _I(0x007FFFFF)) | _I(0x3F800000)))  # mantissa in [1, 2)
+    big = m > _SQRT2_32
+    e = _F(_I((i >> _I(23)) - _I(127)) + _I(1) if big else _I((i >> _I(23)) - _I(127)))
+    t = (m * _FH if big else m) - _F1
+    z = t * t
+    y = ((((((((l0 * t + l1) * t + l2) * t + l3) * t + l4) * t + l5) * t + l6) * t + l7) * t + l8) * t * z
+    return t + ((y + _LN2_LO * e) - _FH * z) + _LN2_HI * e
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS)
+def _rays32(ir, lam, a0, rho_tab, w_tab, ray, k):
+    """k[j, d] = sum along ray d of g W ρ^j, j = 0, 1, 2 (MODEL.md §6: g = η_m/η_T, the
+    Crook factor times the Barus viscosity), float32, for all rays at once (the inner loop
+    runs over the rays and vectorizes). ``ray`` rows: ρ_max, ρ_2, C, B of each ray
+    (ψ = c1²|u|² = (A + ρ (B + C ρ)) e^{λσ}); padding rays have ρ_max = 0."""
+    rm, r2, cq, br = ray[0], ray[1], ray[2], ray[3]
+    k0, k1, k2 = k[0], k[1], k[2]
+    lam32, a032 = _F(lam), _F(a0)
+    k[:] = 0.0
+    for r in range(rho_tab.shape[0]):
+        pr = rho_tab[r, ir]
+        wr = w_tab[r, ir]
+        for d in range(rm.shape[0]):
+            rho = rm[d] * pr
+            e = _exp32(lam32 * math.sqrt((rm[d] - rho) * (rho + r2[d])))  # η/η_T, σ = p/p_max
+            psi = ((rho * cq[d] + br[d]) * rho + a032) * e
+            # G = asinh(s)/(s r), s = √ψ, r = √(1 + ψ); asinh(s) = log1p(z), z = s + ψ/(1 + r),
+            # log1p(z) = log(1 + z) z/((1 + z) − 1)
+            sq = math.sqrt(psi)
+            rt = math.sqrt(_F1 + psi)
+            z = sq + psi / (_F1 + rt)
+            u1 = _F1 + z
+            wg = wr * (_log32(u1) * z * e / ((u1 - _F1) * (sq * rt)))
+            k0[d] += wg
+            wg *= pr
+            k1[d] += wg
+            k2[d] += wg * pr
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
 def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
-    """Sums along one ray of g W ρ^j, j = 0, 1, 2 (MODEL.md §6: g = η_m/η_T, the Crook
-    factor times the Barus viscosity), in the tables' precision: float32 normally (twice
-    as fast; the numpy fast rule uses float32 as well), float64 for the rare ray whose ψ
-    overflows float32. ``scratch`` (dtype of the tables) casts the ray constants."""
+    """Sums along one ray of g W ρ^j, j = 0, 1, 2, as :func:`_rays32` for one ray in the
+    tables' precision: float64 for the rare ray whose ψ overflows float32. ``scratch``
+    (dtype of the tables) casts the ray constants."""
     scratch[0] = rmax
     scratch[1] = r2
     scratch[2] = cq
@@ -106,7 +198,7 @@ def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
 
 
 @njit(cache=True, error_model="numpy")
-def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64):
+def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64):
     """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
     :func:`contact.traction._fast_crook`, whose steps this follows one contact at a time)."""
     lo = min(a, b)
@@ -168,34 +260,44 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab,
     wc = 2.0 * om * cth
     a0 = (uOx * uOx + uOy * uOy) * cth + _PSI_MIN
     w2c = om * om * cth
-    s32 = np.empty(8, np.float32)
+    # rays: float64 geometry, float32 constants padded to a multiple of 8 lanes (AVX2)
+    n_rays = cos_tab.shape[0]
+    c0, s0 = math.cos(th0), math.sin(th0)
+    geo = np.empty((6, n_rays))
+    ray = np.zeros((4, (n_rays + 7) // 8 * 8), np.float32)
+    for d in range(n_rays):
+        c = cos_tab[d, ie] * c0 - sin_tab[d, ie] * s0  # direction th0 + psi
+        s = sin_tab[d, ie] * c0 + cos_tab[d, ie] * s0
+        oe = c * Xo + s * Yo
+        hc = math.sqrt(oe * oe + rO)
+        bc = c * b  # ray direction, metres per unit ρ
+        as_ = s * a
+        q2 = bc * bc + as_ * as_
+        geo[0, d] = ray[0, d] = hc - oe  # ρ_max
+        geo[1, d] = ray[1, d] = hc + oe  # ρ_2
+        geo[2, d] = ray[2, d] = q2 * w2c
+        geo[3, d] = ray[3, d] = bc * (wc * uOy) - as_ * (wc * uOx)
+        geo[4, d] = bc
+        geo[5, d] = as_
+    k = np.empty((3, ray.shape[1]), np.float32)
+    _rays32(ir, lam, a0, rho32, w32, ray, k)
     s64 = np.empty(8)
     S0 = 0.0
     Sx = 0.0
     Sy = 0.0
     Sr = 0.0
     scale = ab * eta_t / hh
-    for d in range(psi_tab.shape[0]):
-        ang = psi_tab[d, ie] + th0
-        c = math.cos(ang)
-        s = math.sin(ang)
-        oe = c * Xo + s * Yo
-        hc = math.sqrt(oe * oe + rO)
-        rmax = hc - oe
-        r2 = hc + oe
-        bc = c * b  # ray direction, metres per unit ρ
-        as_ = s * a
-        q2 = bc * bc + as_ * as_
-        br = bc * (wc * uOy) - as_ * (wc * uOx)
-        k0, k1, k2 = _ray_sums(rmax, r2, q2 * w2c, br, a0, lam, ir, rho32, w32, s32)
+    for d in range(n_rays):
+        rmax, bc, as_ = geo[0, d], geo[4, d], geo[5, d]
+        k0, k1, k2 = float(k[0, d]), float(k[1, d]), float(k[2, d])
         if not (abs(k0) < np.inf and abs(k1) < np.inf and abs(k2) < np.inf):
-            k0, k1, k2 = _ray_sums(rmax, r2, q2 * w2c, br, a0, lam, ir, rho64, w64, s64)
+            k0, k1, k2 = _ray_sums(rmax, geo[1, d], geo[2, d], geo[3, d], a0, lam, ir, rho64, w64, s64)
         w0 = wpsi_tab[d, ie] * rmax * rmax * scale
         S0 += k0 * w0
         w0 *= rmax
         Sx += k1 * w0 * bc
         Sy += k1 * w0 * as_
-        Sr += k2 * w0 * rmax * q2
+        Sr += k2 * w0 * rmax * (bc * bc + as_ * as_)
     xo = Xo * b
     yo = Yo * a
     fx = -om * Sy + uOx * S0
@@ -207,11 +309,12 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab,
 
 
 @njit(cache=True, error_model="numpy")
-def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, out):
+def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64,
+                out):
     for i in range(ux.shape[0]):
         out[0, i], out[1, i], out[2, i], out[3, i] = _crook_one(
-            ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, psi_tab, wpsi_tab, rho32, w32,
-            rho64, w64)
+            ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32,
+            w32, rho64, w64)
 
 
 def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16):
@@ -258,7 +361,7 @@ def rotation_matrices(nu):
 @njit(cache=True, error_model="numpy")
 def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                  c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
     """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
     z = c.shape[1]
     diam = 2.0 * ball_radius
@@ -353,7 +456,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
             1.0 - 0.61 * math.exp(-0.73 * ell))
         h = max(h, min_film)
         fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef,
-                                   psi_tab, wpsi_tab, rho32, w32, rho64, w64)
+                                   cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64)
         if not spin_moment:
             mz = 0.0
     Fx = -q * nx + fx * t1x + fy * t2x
@@ -371,7 +474,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
 @njit(cache=True, error_model="numpy")
 def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                  c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
     """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
 
     Parameters
@@ -385,7 +488,7 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
         Per race: groove-centre radius, axial position (race frame) and (f - 1/2) D, m.
     conformity, sign : ndarray (2,)
         f and the race sign (-1 inner, +1 outer) of :func:`contact.geometry.curvature_radii`.
-    psi_tab, wpsi_tab, rho32, w32, rho64, w64 : ndarray
+    cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64 : ndarray
         :func:`crook_tables`.
     traction : int
         0: normal forces only; 1: Crook (fast rule).
@@ -400,18 +503,19 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
     for idx in range(c.shape[0] * 2 * c.shape[1]):
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                      c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
 def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                            e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                           c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+                           c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration,
+                           load):
     """:func:`race_contacts` with the contacts spread over numba's threads."""
     for idx in prange(c.shape[0] * 2 * c.shape[1]):
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                      c1_coef, psi_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
 
 
 @njit(cache=True, error_model="numpy")

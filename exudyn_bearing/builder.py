@@ -300,7 +300,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     ref = connector.reference
 
     def force_user_function(mbs_, t, itemNumber, q, q_t):
-        return connector.evaluate(t, np.asarray(q) + ref, q_t)
+        return connector.residual_forces(t, q, q_t)
 
     contact = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, forceUserFunction=force_user_function))
     sensor = None

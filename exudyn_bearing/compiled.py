@@ -1,5 +1,7 @@
 """The connector's compiled path: node states -> race frames -> :mod:`contact.compiled` ->
-generalized forces per node slot, for a batch of B states, without numpy call overhead.
+generalized forces per node slot, for a batch of B states (the Jacobian) or, in one
+compiled call from Exudyn's coordinates to the force vector, for one state (the residual,
+~7 times per step: the numpy glue between the kernels cost more than the kernels).
 
 Same equations and conventions as :meth:`BearingConnector._batch_forces` (the numpy
 path, the reference): a global force F enters as F, a global torque tau of a
@@ -96,6 +98,107 @@ def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, d
                 _add_reaction(react, ib, j, cage_slot, rot, lever, cage_force[ib, j], no_moment, -1.0)
 
 
+HELD_NONE, HELD_ROTATION, HELD_ALL = 0, 1, 2
+OK, NON_FINITE, TOO_DEEP = 0, 1, 2
+
+
+@njit(cache=True, error_model="numpy")
+def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot, fixed_origin, fixed_rot, fixed_omega,
+               groove, conformity, sign, ball_radius, pitch_diameter, e_prime, ball_mass, damping_ratio, traction,
+               spin_moment, min_film, eta0, c_p, max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
+               w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
+               drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, applied, held, driven,
+               max_penetration, out, penetration, load):
+    """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
+    reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
+    guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force on the inner
+    race slot, ``held`` components (per slot: HELD_*) dropped, ``driven`` rows (slot,
+    I_axial, feed-forward torque / I + feedback rate ...) see :meth:`CompiledForces.single`.
+    Returns OK, NON_FINITE (state not finite; nothing computed) or TOO_DEEP (an elastic
+    approach above ``max_penetration`` m)."""
+    n = reference.shape[0] // 6
+    z = balls.shape[0]
+    pos = np.empty((1, n, 3))
+    vel = np.empty((1, n, 3))
+    omega = np.empty((1, n, 3))
+    nu = np.empty((n, 3))
+    for s in range(n):
+        for i in range(3):
+            pos[0, s, i] = q[6 * s + i] + reference[6 * s + i]
+            nu[s, i] = q[6 * s + 3 + i] + reference[6 * s + 3 + i]
+            vel[0, s, i] = q_t[6 * s + i]
+    rot = kernels.rotation_matrices(nu).reshape(1, n, 3, 3)
+    for s in range(n):
+        for i in range(3):
+            omega[0, s, i] = (rot[0, s, i, 0] * q_t[6 * s + 3] + rot[0, s, i, 1] * q_t[6 * s + 4]
+                              + rot[0, s, i, 2] * q_t[6 * s + 5])
+    for s in range(n):
+        for i in range(3):
+            if not (abs(pos[0, s, i]) < np.inf and abs(vel[0, s, i]) < np.inf and abs(omega[0, s, i]) < np.inf):
+                return NON_FINITE
+    ro, rr = np.empty((1, 2, 3)), np.empty((1, 2, 3, 3))
+    rv, rw = np.empty((1, 2, 3)), np.empty((1, 2, 3))
+    _race_frames(pos, rot, vel, omega, slots, local_pos, local_rot, fixed_origin, fixed_rot, fixed_omega,
+                 ro, rr, rv, rw)
+    c, v, w = np.empty((1, z, 3)), np.empty((1, z, 3)), np.empty((1, z, 3))
+    for j in range(z):
+        for i in range(3):
+            c[0, j, i] = pos[0, balls[j], i]
+            v[0, j, i] = vel[0, balls[j], i]
+            w[0, j, i] = omega[0, balls[j], i]
+    force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
+    pen3 = penetration.reshape(1, 2, z)
+    kernels.race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter, e_prime,
+                          ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus, c1_coef,
+                          cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, pen3,
+                          load.reshape(1, 2, z))
+    cs = cage_slot if cage_slot >= 0 else 0
+    cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
+    kernels.cage_and_drag(c, v, cage_kind, pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(),
+                          omega[:, cs].copy(), pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping,
+                          axis, origin, drag_factor, cage_force, drag_force)
+    o6 = out.reshape(n, 6)
+    react = np.empty((1, z, n, 6))
+    _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force,
+              o6.reshape(1, n, 6), react)
+    for j in range(z):
+        for s in range(n):
+            for i in range(6):
+                o6[s, i] += react[0, j, s, i]
+    if guide_race >= 0:
+        land, ecc = np.empty((1, 3)), np.empty(1)
+        kernels.land_forces(pos[:, cage_slot].copy(), vel[:, cage_slot].copy(), ro[:, guide_race].copy(),
+                            rv[:, guide_race].copy(), rr[:, guide_race, :, 2].copy(), guide_play, guide_stiffness,
+                            guide_damping, land, ecc)
+        for i in range(3):
+            o6[cage_slot, i] += land[0, i]
+        s = slots[guide_race]
+        if s >= 0:  # the race takes the reaction at the cage centre
+            lever = pos[0, cage_slot] - pos[0, s]
+            tq = np.empty(3)
+            tq[0] = -(lever[1] * land[0, 2] - lever[2] * land[0, 1])
+            tq[1] = -(lever[2] * land[0, 0] - lever[0] * land[0, 2])
+            tq[2] = -(lever[0] * land[0, 1] - lever[1] * land[0, 0])
+            for i in range(3):
+                o6[s, i] -= land[0, i]
+                o6[s, 3 + i] += rot[0, s, 0, i] * tq[0] + rot[0, s, 1, i] * tq[1] + rot[0, s, 2, i] * tq[2]
+    if slots[0] >= 0:
+        for i in range(3):
+            o6[slots[0], i] += applied[i]
+    for s in range(n):
+        if held[s] != HELD_NONE:
+            for i in range(3 if held[s] == HELD_ROTATION else 0, 6):
+                o6[s, i] = 0.0
+    for r in range(driven.shape[0]):  # slot, I, dw_ref/dt, w_ref, 1/tau
+        s = int(driven[r, 0])
+        w_axial = rot[0, s, 0, 2] * omega[0, s, 0] + rot[0, s, 1, 2] * omega[0, s, 1] + rot[0, s, 2, 2] * omega[0, s, 2]
+        o6[s, 5] = driven[r, 1] * (driven[r, 2] + (driven[r, 3] - w_axial) * driven[r, 4])
+    deepest = 0.0
+    for k in range(penetration.shape[0]):
+        deepest = max(deepest, penetration[k])
+    return TOO_DEEP if deepest > max_penetration else OK
+
+
 class CompiledForces:
     """The compiled counterpart of :meth:`BearingConnector._batch_forces` for one connector
     (constant arrays prepared once)."""
@@ -128,14 +231,56 @@ class CompiledForces:
             self.drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * lub.density * np.pi
                                 * b.ball_radius ** 2)
         self._work = {}
+        # the single-state path (:meth:`single`)
+        self.held = np.zeros(con.n_nodes, dtype=np.int64)
+        for slot, what in con.held.items():
+            self.held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
+        self.guide_race, self.guide = -1, (0.0, 0.0, 0.0)
+        if con.guide is not None:
+            self.guide_race = ("inner", "outer").index(con.guide[0])
+            self.guide = tuple(float(x) for x in con.guide[1:])
+        self.cage_args = (self.cage_kind, con.pocket_angles, b.pitch_radius, con.cage.clearance, con.cage.stiffness,
+                          con.cage_damping, con.axis, con.origin, self.drag_factor)
+        self.kinematic = [(i, con.races[k]) for i, k in enumerate(("inner", "outer")) if self.slots[i] < 0]
+        self.no_driven = np.zeros((0, 5))
+        self.out = np.empty(6 * con.n_nodes)
+        self.penetration, self.load = np.empty(2 * b.balls), np.empty(2 * b.balls)
         # compile (first use) or load the cached machine code now, not inside the solver's
         # first step (~0.3 s cached, ~20 s the very first time)
         n = con.n_nodes
-        rot = np.repeat(np.eye(3)[None, None], n, axis=1)
-        pos = np.zeros((1, n, 3))
-        pos[0, self.balls, 0] = b.pitch_radius
-        self(0.0, pos, rot, np.zeros((1, n, 3)), np.zeros((1, n, 3)))
+        rot = np.repeat(np.eye(3)[None, None], 2 * n, axis=1).reshape(2, n, 3, 3)
+        pos = np.zeros((2, n, 3))
+        pos[:, self.balls, 0] = b.pitch_radius
+        self(0.0, pos, rot, np.zeros((2, n, 3)), np.zeros((2, n, 3)))
+        q = np.zeros((n, 6))
+        q[:, :3] = pos[0]
+        self.single(0.0, q.ravel(), np.zeros(6 * n), np.zeros(6 * n))
         kernels.rotation_matrices(np.zeros((1, 3)))
+
+    def fixed_omega(self, t):
+        """Angular velocities (2, 3) of the kinematic races (zero rows for races on a node)."""
+        w = np.zeros((2, 3))
+        for i, race in self.kinematic:
+            w[i] = race.speed(t) * self.con.axis
+        return w
+
+    def single(self, t, q, q_t, reference):
+        """Status (:data:`OK`, :data:`NON_FINITE`, :data:`TOO_DEEP`) and the force vector
+        (6 n_nodes, reused between calls) of one state from Exudyn's coordinates q (without
+        ``reference``) and velocities q_t, in one compiled call (:func:`_one_state`)."""
+        con = self.con
+        driven = self.no_driven
+        if con.driven:
+            dt = 1e-6
+            driven = np.array([[slot, inertia, (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt), race.speed(t),
+                                1.0 / con.speed_tracking_time] for slot, (race, inertia) in con.driven.items()])
+        status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self.balls,
+                            self.slots, self.cage_slot, self.local_pos, self.local_rot, con.origin, con.rotation,
+                            self.fixed_omega(t), self.groove, self.conformity, self.sign, *self.physics, *self.tables,
+                            *self.cage_args, self.guide_race, *self.guide,
+                            np.asarray(con.applied_force(t), dtype=float), self.held, driven,
+                            con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load)
+        return status, self.out
 
     def _arrays(self, bsz):
         if bsz not in self._work:
@@ -173,8 +318,7 @@ class CompiledForces:
         con = self.con
         bsz = pos.shape[0]
         w = self._arrays(bsz)
-        fixed_omega = np.array([con.races[k].speed(t) * con.axis if self.slots[i] < 0 else np.zeros(3)
-                                for i, k in enumerate(("inner", "outer"))])
+        fixed_omega = self.fixed_omega(t)
         pos, rot = np.ascontiguousarray(pos), np.ascontiguousarray(rot)
         vel, omega = np.ascontiguousarray(vel), np.ascontiguousarray(omega)
         _race_frames(pos, rot, vel, omega, self.slots, self.local_pos, self.local_rot, con.origin, con.rotation,
@@ -184,7 +328,7 @@ class CompiledForces:
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
         # OpenMP is missing, serves one caller at a time)
-        run = (kernels.race_contacts_parallel if threading.current_thread() is threading.main_thread()
+        run = (kernels.race_contacts_parallel if bsz > 1 and threading.current_thread() is threading.main_thread()
                else kernels.race_contacts)
         run(c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
             *self.physics, *self.tables, w["force"], w["moment"], w["penetration"],

@@ -262,6 +262,17 @@ class BearingConnector:
         """
         return self.forces(t, *self.decode(q, q_t), details=details)
 
+    def residual_forces(self, t, q, q_t):
+        """Generalized forces (6 per node slot) for Exudyn's coordinates q (WITHOUT the
+        reference) and velocities q_t: the force user function. One compiled call when the
+        compiled path applies; a state it cannot take (not finite, a ball out of its groove)
+        goes through :meth:`forces`, which records why and returns NaN."""
+        if self._compiled is not None:
+            status, out = self._compiled.single(t, q, q_t, self.reference)
+            if status == 0:
+                return out.copy()
+        return self.evaluate(t, np.asarray(q) + self.reference, q_t)
+
     def forces(self, t, pos, rot, vel, omega_local, details=False):
         """Generalized forces from decoded node states (see :meth:`decode`): the force
         vector (6 per node slot) or, with ``details``, the :class:`ConnectorState`."""

@@ -72,6 +72,22 @@ def test_crook_kernel_is_the_numpy_fast_rule():
     assert np.max(np.abs(got[2] - ref.mz) / (scale * np.maximum(a, b))) < 3e-4
 
 
+def test_float32_exp_and_log_are_float32_accurate():
+    """The quadrature's vectorizable exp and log against numpy in float64: within two
+    float32 ulps over the ranges they serve (e^x for 0 <= x <= 88, inf beyond; ln x for
+    x >= 1 up to float32's largest numbers)."""
+    x = np.concatenate([np.linspace(0.0, 88.0, 4001), [1e-7, 0.5 * np.log(2.0)]]).astype(np.float32)
+    got = np.array([compiled._exp32(v) for v in x], dtype=np.float64)
+    ref = np.exp(x.astype(np.float64))
+    assert np.max(np.abs(got - ref) / ref) < 2 * 2.0 ** -23
+    assert compiled._exp32(np.float32(89.0)) == np.inf
+    y = np.concatenate([1.0 + np.logspace(-7, 0, 2000), np.logspace(0, 38, 2000), [1.0, np.sqrt(2.0)]])
+    y = y.astype(np.float32)
+    got = np.array([compiled._log32(v) for v in y], dtype=np.float64)
+    ref = np.log(y.astype(np.float64))
+    assert np.max(np.abs(got - ref) / np.maximum(ref, 2.0 ** -23)) < 2 * 2.0 ** -23
+
+
 def test_crook_kernel_redoes_float32_overflow_in_float64():
     """c_etaP p_max = 90: e^(lambda sigma) overflows float32 near the peak; those rays are
     redone in float64 and the result still matches the accurate rule."""
@@ -113,29 +129,67 @@ SCENES = {
     "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
     "no spin moment, Fixed inner translation": dict(innerRace=races.Driven(1800, translation="fixed"),
                                                     law=ContactLaw(spin_moment=False)),
+    # driven-speed torque (feed-forward of the ramp + feedback) and an inner-land cage
+    "speed ramp, inner-guided cage, turning outer race": dict(
+        innerRace=races.Driven(lambda t: 900.0 + 30000.0 * t), outerRace=races.Fixed(lambda t: -100.0 * t),
+        cage=CageModel(guidance="inner"), axialForce=800.0, radialForce=300.0),
 }
 
 
-def _both_paths(con, q, qt):
-    fast = con.evaluate(0.01, q, qt).reshape(-1, 6)
+def _both_paths(con, q, qt, t=0.01):
+    """(single-state compiled path (the force user function), batch compiled path, numpy
+    path) of one state, each (n_nodes, 6)."""
+    single = con.residual_forces(t, q - con.reference, qt).reshape(-1, 6)
+    fast = con.evaluate(t, q, qt).reshape(-1, 6)
     kernel, con._compiled = con._compiled, None
     try:
-        ref = con.evaluate(0.01, q, qt).reshape(-1, 6)
+        ref = con.evaluate(t, q, qt).reshape(-1, 6)
     finally:
         con._compiled = kernel
-    return fast, ref
+    return single, fast, ref
 
 
 @pytest.mark.parametrize("name", SCENES)
-def test_connector_compiled_path_matches_numpy_path(name):
+def test_connector_compiled_paths_match_numpy_path(name):
     kw = dict(SCENES[name])
     _sc, con, q, qt = _scene(**kw)
     assert con._compiled is not None
-    fast, ref = _both_paths(con, q, qt)
+    single, fast, ref = _both_paths(con, q, qt)
     assert np.max(np.abs(ref[:, :3])) > 10.0  # loaded contacts
-    for part in (slice(0, 3), slice(3, 6)):  # forces (N) and torques (N m) on their own scales
-        err = np.max(np.abs(fast[:, part] - ref[:, part]))
-        assert err < 1e-6 * np.max(np.abs(ref[:, part])), (part, err)
+    for got in (single, fast):
+        for part in (slice(0, 3), slice(3, 6)):  # forces (N) and torques (N m) on their own scales
+            err = np.max(np.abs(got[:, part] - ref[:, part]))
+            assert err < 1e-6 * np.max(np.abs(ref[:, part])), (part, err)
+
+
+def test_compiled_paths_match_numpy_path_with_the_cage_on_its_land():
+    """The cage 0.3 mm off-centre (beyond the 0.2 mm play) and 1 mm axially: the land
+    force and its reaction on a free guiding race, whose torque about the race node needs
+    the lever between the two centres."""
+    _sc, con, q, qt = _scene(axialForce=600.0, outerRace=races.Free())
+    s = con.layout["cage"]
+    q = q.copy()
+    q[6 * s:6 * s + 3] += [0.3e-3, 0.0, 1e-3]
+    single, fast, ref = _both_paths(con, q, qt)
+    outer = con.layout["outer"]
+    assert np.max(np.abs(ref[outer, 3:])) > 0.1  # the land's moment on the free race
+    for got in (single, fast):
+        np.testing.assert_allclose(got, ref, rtol=0, atol=1e-6 * np.max(np.abs(ref)))
+
+
+def test_single_state_path_hands_bad_states_to_the_checked_path():
+    """A non-finite state and a ball pushed out of its groove: NaN forces and the reason
+    recorded, as from the numpy path."""
+    _sc, con, q, qt = _scene(axialForce=1300.0)
+    bad = q - con.reference
+    bad[7] = np.nan
+    assert np.all(np.isnan(con.residual_forces(0.0, bad, qt)))
+    assert "non-finite position of ball 1" in con.first_non_finite
+    con.first_non_finite = None
+    deep = q - con.reference
+    deep[:2] += 0.05 * con.bearing.ball_diameter * q[:2] / np.hypot(*q[:2])  # ball 0 radially out by 5 % of D
+    assert np.all(np.isnan(con.residual_forces(0.0, deep, qt)))
+    assert "ball 0 pushed out of its groove at the outer race" in con.first_non_finite
 
 
 def test_spin_moment_term_matches_numpy_path():
@@ -144,7 +198,7 @@ def test_spin_moment_term_matches_numpy_path():
     parts = []
     for spin in (True, False):
         _sc, con, q, qt = _scene(law=ContactLaw(spin_moment=spin), axialForce=1300.0)
-        parts.append(_both_paths(con, q, qt))
+        parts.append(_both_paths(con, q, qt)[1:])
     d_fast, d_ref = parts[0][0] - parts[1][0], parts[0][1] - parts[1][1]
     assert np.max(np.abs(d_ref[:, 3:])) > 1e-6
     assert np.max(np.abs(d_fast - d_ref)) < 1e-4 * np.max(np.abs(d_ref[:, 3:]))
@@ -164,10 +218,12 @@ def test_connector_jacobian_compiled_matches_numpy():
 
 
 def test_serial_kernel_from_a_thread_equals_parallel():
+    """A batch (the Jacobian's states) runs on numba's threads from the main thread and
+    serially from another thread: the same numbers."""
     _sc, con, q, qt = _scene(axialForce=1300.0)
-    main = con.evaluate(0.01, q, qt)
+    main = con.jacobian(0.01, q, qt, 1.0, 1e-4)
     box = {}
-    worker = threading.Thread(target=lambda: box.setdefault("f", con.evaluate(0.01, q, qt)))
+    worker = threading.Thread(target=lambda: box.setdefault("f", con.jacobian(0.01, q, qt, 1.0, 1e-4)))
     worker.start()
     worker.join()
     np.testing.assert_allclose(box["f"], main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
