@@ -512,15 +512,14 @@ class BearingConnector:
         p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
         v2, w2 = np.repeat(vel[None], nb, axis=0), np.repeat(wl[None], nb, axis=0)
         steps = np.empty(len(columns))
+        turn = rotation_matrices(eps_rotation * np.eye(3))  # exp(eps e_k~), k = 0, 1, 2
         for i, (group, k, which) in enumerate(columns, start=1):
             if which == "q" and k < 3:
                 steps[i - 1] = eps_position
                 p2[i, group, k] += eps_position
             elif which == "q":
                 steps[i - 1] = eps_rotation
-                inc = np.zeros(3)
-                inc[k - 3] = eps_rotation
-                r2[i, group] = r2[i, group] @ rotation_matrices(inc[None])[0]
+                r2[i, group] = r2[i, group] @ turn[k - 3]
             else:
                 steps[i - 1] = eps_velocity
                 (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
@@ -536,15 +535,16 @@ class BearingConnector:
         d_react = (react[1:] - react[0]) / steps[:, None, None, None]
         dq = np.zeros((n6, n6))
         dv = np.zeros((n6, n6))
+        six = np.arange(6)
+        ball_rows = (6 * balls[:, None] + six).T  # (6, Z): row i of ball j's block
         for i, (group, k, which) in enumerate(columns):
             target = dq if which == "q" else dv
             if int(group[0]) in ball_slots and not coupled:
                 # ball rows: own block only; race/cage rows: that ball's contribution
-                for b in group:
-                    col = 6 * b + k
-                    target[6 * b:6 * b + 6, col] = d_out[i, b]
-                    for s in others:
-                        target[6 * s:6 * s + 6, col] = d_react[i, b, s]
+                cols = 6 * balls + k
+                target[ball_rows, cols] = d_out[i, balls].T
+                for s in others:
+                    target[6 * s:6 * s + 6, cols] = d_react[i, balls, s].T
             else:
                 target[:, 6 * group[0] + k] = (d_out[i] + d_react[i].sum(axis=0)).ravel()
         return -(f_q * dq + f_qt * dv)
