@@ -71,8 +71,10 @@ def reference_settings(case: str):
     """Two finest settings of the reference solver (the second is the reference)."""
     if case == "a":
         return [SolverSettings("rk44", step=h) for h in (5e-6, 2.5e-6)]
+    # 1.25e-5 / 6.25e-6 s disagreed by 2.5e-2 pp; 6.25e-6 / 3.125e-6 s agree to 1.4e-3 pp. A
+    # tighter Newton tolerance (1e-8) fails at both steps (Newton does not get there by t = 0.16 ms)
     return [SolverSettings("generalized-alpha", step=h, spectral_radius=0.8, relative_tolerance=1e-6)
-            for h in (1.25e-5, 6.25e-6)]
+            for h in (6.25e-6, 3.125e-6)]
 
 
 def run_case(case: str, sim_time: float, log) -> dict:

@@ -111,11 +111,11 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                max_penetration, out, penetration, load):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
-    guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force on the inner
-    race slot, ``held`` components (per slot: HELD_*) dropped, ``driven`` rows (slot,
-    I_axial, feed-forward torque / I + feedback rate ...) see :meth:`CompiledForces.single`.
-    Returns OK, NON_FINITE (state not finite; nothing computed) or TOO_DEEP (an elastic
-    approach above ``max_penetration`` m)."""
+    guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force (N) on the
+    inner race slot, ``held`` components (per slot: HELD_*) dropped, and per ``driven`` row
+    (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven race's axial
+    torque I (dw_ref/dt + (w_ref - w)/tau). Returns OK, NON_FINITE (state not finite;
+    nothing computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m)."""
     n = reference.shape[0] // 6
     z = balls.shape[0]
     pos = np.empty((1, n, 3))
