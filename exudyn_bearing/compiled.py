@@ -199,6 +199,81 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
     return TOO_DEEP if deepest > max_penetration else OK
 
 
+@njit(cache=True, error_model="numpy")
+def jacobian_states(pos, rot, vel, w_local, col_group, col_k, col_v, group_mask, eps, turn, p2, r2, v2, w2):
+    """The block Jacobian's states (``BearingConnector.jacobian``): state 0 the base, state
+    i + 1 column i's perturbation of every node of its group (``group_mask``) — position
+    ``eps[0]``, rotation A -> A turn[k - 3] (``turn`` = exp(eps[1] e_k~)), velocity or local
+    angular velocity ``eps[2]``. Writes p2, r2, v2 and the GLOBAL angular velocities w2
+    (B = 1 + columns); returns the step of each column."""
+    n = pos.shape[0]
+    ncol = col_group.shape[0]
+    wl = np.empty((ncol + 1, n, 3))
+    for b in range(ncol + 1):
+        p2[b] = pos
+        r2[b] = rot
+        v2[b] = vel
+        wl[b] = w_local
+    steps = np.empty(ncol)
+    for i in range(ncol):
+        k = col_k[i]
+        steps[i] = eps[2] if col_v[i] else (eps[0] if k < 3 else eps[1])
+        for s in range(n):
+            if not group_mask[col_group[i], s]:
+                continue
+            if col_v[i]:
+                if k < 3:
+                    v2[i + 1, s, k] += eps[2]
+                else:
+                    wl[i + 1, s, k - 3] += eps[2]
+            elif k < 3:
+                p2[i + 1, s, k] += eps[0]
+            else:
+                a = r2[i + 1, s].copy()
+                e = turn[k - 3]
+                for r in range(3):
+                    for c in range(3):
+                        r2[i + 1, s, r, c] = a[r, 0] * e[0, c] + a[r, 1] * e[1, c] + a[r, 2] * e[2, c]
+    for b in range(ncol + 1):
+        for s in range(n):
+            for r in range(3):
+                w2[b, s, r] = r2[b, s, r, 0] * wl[b, s, 0] + r2[b, s, r, 1] * wl[b, s, 1] + r2[b, s, r, 2] * wl[b, s, 2]
+    return steps
+
+
+@njit(cache=True, error_model="numpy")
+def jacobian_assemble(out, react, steps, col_group, col_k, col_v, group_block, group_slot, balls, others, f_q, f_qt,
+                      jac):
+    """-(f_q dF/dq + f_qt dF/dq_t) from the forces of :func:`jacobian_states`' states
+    (out (B, n, 6), per-ball race/cage parts react (B, Z, n, 6)) into ``jac`` (6n, 6n):
+    a column of a block group (the balls, each coupled only to itself and the races/cage)
+    fills each ball's own block and that ball's part of the race/cage rows; any other
+    column is the whole force change."""
+    jac[:] = 0.0
+    n = out.shape[1]
+    for i in range(col_group.shape[0]):
+        fac = (f_qt if col_v[i] else f_q) / steps[i]
+        k = col_k[i]
+        g = col_group[i]
+        if group_block[g]:
+            for j in range(balls.shape[0]):
+                b = balls[j]
+                col = 6 * b + k
+                for r in range(6):
+                    jac[6 * b + r, col] -= fac * (out[i + 1, b, r] - out[0, b, r])
+                for s in others:
+                    for r in range(6):
+                        jac[6 * s + r, col] -= fac * (react[i + 1, j, s, r] - react[0, j, s, r])
+        else:
+            col = 6 * group_slot[g] + k
+            for s in range(n):
+                for r in range(6):
+                    d = out[i + 1, s, r] - out[0, s, r]
+                    for j in range(balls.shape[0]):
+                        d += react[i + 1, j, s, r] - react[0, j, s, r]
+                    jac[6 * s + r, col] -= fac * d
+
+
 class CompiledForces:
     """The compiled counterpart of :meth:`BearingConnector._batch_forces` for one connector
     (constant arrays prepared once)."""

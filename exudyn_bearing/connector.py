@@ -201,6 +201,7 @@ class BearingConnector:
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
         self._params_cache = {}
         self._compiled = None
+        self._jac_spec = None
         self._land_kernel = None
         self._rotations = rotation_matrices
         if law.compiled:
@@ -498,21 +499,30 @@ class BearingConnector:
         """
         pos, rot, vel, wl = self.decode(q, q_t)
         n6 = 6 * self.n_nodes
-        balls = np.asarray(self.layout["balls"])
-        ball_slots = set(balls.tolist())
-        coupled = self.cage.kind == "spring-chain"
-        others = [s for s in range(self.n_nodes) if s not in ball_slots]
-        groups = [balls] if not coupled else [np.array([b]) for b in balls]
-        groups += [np.array([s]) for s in others]
-        frozen = {s: range(6) if what == "all" else range(3, 6) for s, what in self.held.items()
-                  if s not in self.driven}
-        columns = [(group, k, which) for group in groups for k in range(6) for which in ("q", "v")
-                   if k not in frozen.get(int(group[0]), ())]
+        if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel)) and np.all(np.isfinite(wl))):
+            return np.full((n6, n6), np.nan)
+        spec = self._jacobian_columns()
+        columns, balls, others, ball_slots, coupled = (spec[k] for k in ("columns", "balls", "others", "ball_slots",
+                                                                          "coupled"))
         nb = 1 + len(columns)
+        turn = rotation_matrices(eps_rotation * np.eye(3))  # exp(eps e_k~), k = 0, 1, 2
+        if self._compiled is not None:  # the same in compiled loops (~1.3 ms of numpy per Jacobian)
+            from . import compiled as compiled_glue
+
+            p2, r2 = np.empty((nb,) + pos.shape), np.empty((nb,) + rot.shape)
+            v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
+            steps = compiled_glue.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl),
+                                                  *spec["arrays"][:4],
+                                                  np.array([eps_position, eps_rotation, eps_velocity]), turn,
+                                                  p2, r2, v2, w2)
+            out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"])
+            jac = np.empty((n6, n6))
+            compiled_glue.jacobian_assemble(out, react, steps, *spec["arrays"][:3], *spec["arrays"][4:], f_q, f_qt,
+                                            jac)
+            return jac
         p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
         v2, w2 = np.repeat(vel[None], nb, axis=0), np.repeat(wl[None], nb, axis=0)
         steps = np.empty(len(columns))
-        turn = rotation_matrices(eps_rotation * np.eye(3))  # exp(eps e_k~), k = 0, 1, 2
         for i, (group, k, which) in enumerate(columns, start=1):
             if which == "q" and k < 3:
                 steps[i - 1] = eps_position
@@ -523,20 +533,13 @@ class BearingConnector:
             else:
                 steps[i - 1] = eps_velocity
                 (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
-        if not (np.all(np.isfinite(p2[0])) and np.all(np.isfinite(v2[0])) and np.all(np.isfinite(w2[0]))):
-            return np.full((n6, n6), np.nan)
-        # a perturbed cage moves no ball and no race: its states reuse the base contacts
-        # (the Crook quadrature is most of an evaluation; 12 of ~31 states here)
-        cage_slot = self.layout["cage"]
-        same = np.array([False] + [cage_slot is not None and int(group[0]) == cage_slot for group, _, _ in columns])
         out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2),
-                                                 same_contacts=same)
+                                                 same_contacts=spec["same"])
         d_out = (out[1:] - out[0]) / steps[:, None, None]
         d_react = (react[1:] - react[0]) / steps[:, None, None, None]
         dq = np.zeros((n6, n6))
         dv = np.zeros((n6, n6))
-        six = np.arange(6)
-        ball_rows = (6 * balls[:, None] + six).T  # (6, Z): row i of ball j's block
+        ball_rows = (6 * balls[:, None] + np.arange(6)).T  # (6, Z): row i of ball j's block
         for i, (group, k, which) in enumerate(columns):
             target = dq if which == "q" else dv
             if int(group[0]) in ball_slots and not coupled:
@@ -548,3 +551,35 @@ class BearingConnector:
             else:
                 target[:, 6 * group[0] + k] = (d_out[i] + d_react[i].sum(axis=0)).ravel()
         return -(f_q * dq + f_qt * dv)
+
+    def _jacobian_columns(self) -> dict:
+        """The block Jacobian's columns (group of slots, coordinate k, 'q' or 'v'), fixed by
+        the layout and the held races, as lists and as arrays for the compiled loops
+        (cached)."""
+        if self._jac_spec is not None:
+            return self._jac_spec
+        balls = np.asarray(self.layout["balls"])
+        ball_slots = set(balls.tolist())
+        coupled = self.cage.kind == "spring-chain"
+        others = [s for s in range(self.n_nodes) if s not in ball_slots]
+        groups = [balls] if not coupled else [np.array([b]) for b in balls]
+        groups += [np.array([s]) for s in others]
+        frozen = {s: range(6) if what == "all" else range(3, 6) for s, what in self.held.items()
+                  if s not in self.driven}
+        columns = [(gi, group, k, which) for gi, group in enumerate(groups) for k in range(6)
+                   for which in ("q", "v") if k not in frozen.get(int(group[0]), ())]
+        mask = np.zeros((len(groups), self.n_nodes), dtype=np.bool_)
+        for gi, group in enumerate(groups):
+            mask[gi, group] = True
+        block = np.array([int(group[0]) in ball_slots and not coupled for group in groups])
+        # a perturbed cage moves no ball and no race: its states reuse the base contacts
+        # (the Crook quadrature is most of an evaluation; 12 of ~31 states here)
+        cage_slot = self.layout["cage"]
+        same = np.array([False] + [cage_slot is not None and int(group[0]) == cage_slot for _, group, _, _ in columns])
+        arrays = (np.array([c[0] for c in columns], dtype=np.int64), np.array([c[2] for c in columns], dtype=np.int64),
+                  np.array([c[3] == "v" for c in columns], dtype=np.bool_), mask, block,
+                  np.array([int(g[0]) for g in groups], dtype=np.int64), balls.astype(np.int64),
+                  np.array(others, dtype=np.int64))
+        self._jac_spec = dict(columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots,
+                              coupled=coupled, same=same, arrays=arrays)
+        return self._jac_spec

@@ -204,10 +204,14 @@ def test_spin_moment_term_matches_numpy_path():
     assert np.max(np.abs(d_fast - d_ref)) < 1e-4 * np.max(np.abs(d_ref[:, 3:]))
 
 
-def test_connector_jacobian_compiled_matches_numpy():
-    """The compiled Jacobian equals the numpy one up to finite-difference noise of the
-    float32 rays."""
-    _sc, con, q, qt = _scene(axialForce=1300.0)
+@pytest.mark.parametrize("name", ["axial, rigid cage, drag", "spring chain, no drag", "pocket play, free outer race",
+                                  "speed ramp, inner-guided cage, turning outer race"])
+def test_connector_jacobian_compiled_matches_numpy(name):
+    """The compiled Jacobian (compiled states, kernels and assembly) equals the numpy one up
+    to finite-difference noise of the float32 rays: ball blocks, coupled balls (spring
+    chain: one column group per ball), a free outer race (all its columns) and a driven
+    race (its rotation columns too)."""
+    _sc, con, q, qt = _scene(**SCENES[name])
     fast = con.jacobian(0.01, q, qt, 1.0, 1e-4)
     kernel, con._compiled = con._compiled, None
     try:
