@@ -174,14 +174,10 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
             o6[cage_slot, i] += land[0, i]
         s = slots[guide_race]
         if s >= 0:  # the race takes the reaction at the cage centre
-            lever = pos[0, cage_slot] - pos[0, s]
-            tq = np.empty(3)
-            tq[0] = -(lever[1] * land[0, 2] - lever[2] * land[0, 1])
-            tq[1] = -(lever[2] * land[0, 0] - lever[0] * land[0, 2])
-            tq[2] = -(lever[0] * land[0, 1] - lever[1] * land[0, 0])
-            for i in range(3):
-                o6[s, i] -= land[0, i]
-                o6[s, 3 + i] += rot[0, s, 0, i] * tq[0] + rot[0, s, 1, i] * tq[1] + rot[0, s, 2, i] * tq[2]
+            reaction = np.zeros((1, 1, n, 6))
+            _add_reaction(reaction, 0, 0, s, rot, pos[0, cage_slot] - pos[0, s], land[0], np.zeros(3), -1.0)
+            for i in range(6):
+                o6[s, i] += reaction[0, 0, s, i]
     if slots[0] >= 0:
         for i in range(3):
             o6[slots[0], i] += applied[i]
@@ -346,9 +342,7 @@ class CompiledForces:
         con = self.con
         driven = self.no_driven
         if con.driven:
-            dt = 1e-6
-            driven = np.array([[slot, inertia, (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt), race.speed(t),
-                                1.0 / con.speed_tracking_time] for slot, (race, inertia) in con.driven.items()])
+            driven = np.array([[*row, 1.0 / con.speed_tracking_time] for row in con.driven_speeds(t)])
         status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self.balls,
                             self.slots, self.cage_slot, self.local_pos, self.local_rot, con.origin, con.rotation,
                             self.fixed_omega(t), self.groove, self.conformity, self.sign, *self.physics, *self.tables,

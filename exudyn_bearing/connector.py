@@ -338,13 +338,17 @@ class BearingConnector:
             if what == "all":
                 out[:, slot, :3] = 0.0
                 react[:, :, slot, :3] = 0.0
-        for slot, (race, inertia) in self.driven.items():
-            dt = 1e-6
-            w_ref = race.speed(t)
-            accel = (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt)
+        for slot, inertia, accel, w_ref in self.driven_speeds(t):
             w_axial = np.einsum("bi,bi->b", rot[:, slot, :, 2], omega[:, slot])
             out[:, slot, 5] = inertia * (accel + (w_ref - w_axial) / self.speed_tracking_time)
         return out, react, pen, load, parts
+
+    def driven_speeds(self, t):
+        """Per driven race: (slot, axial moment of inertia kg m², prescribed angular
+        acceleration rad/s² (centred difference), prescribed speed rad/s) at t."""
+        dt = 1e-6
+        return [(slot, inertia, (race.speed(t + dt) - race.speed(t - dt)) / (2 * dt), race.speed(t))
+                for slot, (race, inertia) in self.driven.items()]
 
     def land_force(self, t, pos, rot, vel, omega):
         """Guiding-land force on the cage (B, 3), N, the guiding race's slot (or None) and
