@@ -30,10 +30,10 @@ def effective_modulus(youngs_1, poisson_1, youngs_2=None, poisson_2=None):
         youngs_2, poisson_2 = youngs_1, poisson_1
     for name, value in (("youngs_modulus", youngs_1), ("youngs_modulus", youngs_2)):
         if not np.all(np.asarray(value) > 0):
-            raise ValueError(f"{name} must be positive, got {value!r}")
+            raise ValueError(f"{name} (youngs_1, youngs_2) must be positive, got {value!r}")
     for value in (poisson_1, poisson_2):
         if not np.all((np.asarray(value) > -1) & (np.asarray(value) < 0.5)):
-            raise ValueError(f"poisson_ratio must lie in (-1, 0.5), got {value!r}")
+            raise ValueError(f"poisson_ratio (poisson_1, poisson_2) must lie in (-1, 0.5), got {value!r}")
     return 2.0 / ((1 - np.square(poisson_1)) / youngs_1 + (1 - np.square(poisson_2)) / youngs_2)
 
 

@@ -290,8 +290,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         nodes.append(node)
     for node in nodes:
         if mbs.GetNode(node)["nodeType"] != "RigidBodyRotVecLG":
-            raise ValueError(f"node {node} must be a NodeRigidBodyRotVecLG (create the body with "
-                             "nodeType=exu.NodeType.RotationRotationVector)")
+            raise ValueError(f"innerRace/outerRace: OnBody node {node} must be a NodeRigidBodyRotVecLG "
+                             "(create the body with nodeType=exu.NodeType.RotationRotationVector)")
     connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
                                  layout, origin, frame, race_frames,
                                  lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven)

@@ -54,7 +54,7 @@ class Race:
             raise ValueError(f"mass must be positive, got {self.mass!r}")
         rot = np.asarray(self.local_rotation, dtype=float)
         if rot.shape != (3, 3) or not np.allclose(rot @ rot.T, np.eye(3), atol=1e-9):
-            raise ValueError("local_rotation must be a 3x3 rotation matrix")
+            raise ValueError("local_rotation (localRotation of OnBody) must be a 3x3 rotation matrix")
 
     @property
     def has_node(self) -> bool:
