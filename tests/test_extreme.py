@@ -2,9 +2,14 @@
 bounded state or stops with a BearingSimulationError naming what failed. Short simulated
 times here (1-4 ms); the full cases (10-60 ms) are in ``benchmarks/extreme.py``.
 
-Bounds come from independent numbers: the applied loads, the centrifugal force
-m r_p w_c², the prescribed speed ramp, and the kinetic energy of balls rolling at the
-inner-race speed.
+Bounds come from independent numbers, each within ~1.5x of what it guards: the
+quasi-static per-ball loads (``solve_load_distribution``, checked against Jones–Harris in
+``tests/test_quasistatic.py``) at the case's load and speed, the static load a suddenly
+applied step can reach (twice the step), the centrifugal force m r_p w² of the fastest
+orbit, and the kinetic energy of balls rolling at Harris's pure-rolling speeds. Where a
+case starts far from its own equilibrium and rings (balls thrown outward at 10000 rpm,
+20 N of axial load) the inner contacts can only be held to a no-blow-up bound; those
+checks say so.
 """
 import dataclasses
 import math
@@ -36,25 +41,62 @@ def run(time, rpm=RPM, lubricant=REFERENCE_LUBRICANT, **kw):
     return h.Results(mbs)
 
 
-def assert_bounded(res, axial, w_inner_max):
-    """Finite outputs, race loads within what the applied axial load and the centrifugal
-    force can produce, cage between the races, ball kinetic energy below that of balls
-    orbiting at the inner-race speed and spinning at d_m/D times it."""
+def quasi_static(axial, radial=0.0, rpm=RPM, cage_speed=None):
+    """Largest quasi-static inner and outer contact loads, N."""
+    qs = solve_load_distribution(B, axial=axial, radial=radial, rpm=rpm, cage_speed=cage_speed)
+    return float(qs.inner_load.max()), float(qs.outer_load.max())
+
+
+def harris_rolling(w_inner):
+    """Harris's pure-rolling cage speed and ball spin speed (relative to the cage) for an
+    inner race at w_inner, fixed outer race, nominal angle: w_c = w/2 (1 - g),
+    w_R = d_m/(2 D) w (1 - g²), g = D cos a / d_m."""
+    g = B.ball_diameter * math.cos(B.contact_angle) / B.pitch_diameter
+    return 0.5 * w_inner * (1 - g), B.pitch_diameter / (2 * B.ball_diameter) * w_inner * (1 - g * g)
+
+
+def check_state(res, w_inner_max):
+    """Finite outputs; cage between standstill and 1.5x Harris's pure-rolling speed at the
+    fastest inner-race speed (the split contact angles of light loads and high speeds let
+    it run up to ~1.35x); ball kinetic energy (spin + orbit) below twice that of a ball
+    spinning at Harris's w_R and orbiting at his w_c (reached: up to ~0.85 of the limit)."""
     for name in ("cage_speed", "kinematic_cage_slip_percent", "ball_omega_orbiting"):
         assert np.all(np.isfinite(getattr(res, name))), name
     for race in (res.inner, res.outer):
         for key, arr in race.items():
             assert np.all(np.isfinite(arr)), key
-    f_c = B.ball_mass * B.pitch_radius * w_inner_max ** 2  # orbit at the inner speed: an upper bound
-    bound = axial / math.sin(B.contact_angle) + 2 * f_c
-    assert res.inner["load"].max() < bound and res.outer["load"].max() < bound
-    assert np.all(res.cage_speed > -1e-6) and np.all(res.cage_speed < w_inner_max * 1.001)
+    w_c, w_r = harris_rolling(w_inner_max)
+    assert np.all(res.cage_speed > -1e-6) and np.all(res.cage_speed < 1.5 * w_c)
     w_ball = np.linalg.norm(res.ball_omega_orbiting, axis=-1)
     inertia = 0.4 * B.ball_mass * B.ball_radius ** 2
     energy = 0.5 * inertia * w_ball ** 2 + 0.5 * B.ball_mass * (res.ball_orbital_speed * B.pitch_radius) ** 2
-    limit = 0.5 * inertia * (w_inner_max * B.pitch_diameter / B.ball_diameter) ** 2 \
-        + 0.5 * B.ball_mass * (w_inner_max * B.pitch_radius) ** 2
-    assert energy.max() < limit
+    rolling = 0.5 * inertia * w_r ** 2 + 0.5 * B.ball_mass * (w_c * B.pitch_radius) ** 2
+    assert energy.max() < 2.0 * rolling
+
+
+def assert_bounded(res, reference, w_inner_max, factor=1.25, steady=False):
+    """:func:`check_state` and the largest inner and outer contact loads of the run below
+    ``factor`` times the independent ``reference`` (inner, outer) loads; ``steady``: a run
+    that starts in its own equilibrium, so also above reference / factor."""
+    check_state(res, w_inner_max)
+    for name, race, ref in (("inner", res.inner, reference[0]), ("outer", res.outer, reference[1])):
+        peak = float(race["load"].max())
+        assert peak < factor * ref, (name, peak, ref)
+        if steady:
+            assert peak > ref / factor, (name, peak, ref)
+
+
+def assert_no_blow_up(res, load_limit, w_inner_max):
+    """:func:`check_state` and every contact load below ``load_limit``: all that can be
+    said of contacts ringing after a start far from equilibrium."""
+    check_state(res, w_inner_max)
+    for name, race in (("inner", res.inner), ("outer", res.outer)):
+        assert race["load"].max() < load_limit, (name, float(race["load"].max()), load_limit)
+
+
+def centrifugal(w_orbit):
+    """m r_p w², N."""
+    return B.ball_mass * B.pitch_radius * w_orbit ** 2
 
 
 W = RPM * math.pi / 30
@@ -63,29 +105,44 @@ W = RPM * math.pi / 30
 def test_very_stiff_traction():
     lub = dataclasses.replace(REFERENCE_LUBRICANT, pressure_viscosity=2e-8)
     res = run(0.003, lubricant=lub, axialForce=1300.0)
-    assert_bounded(res, 1300.0, W)
+    assert_bounded(res, quasi_static(1300.0), W, steady=True)
     assert abs(res.cage_speed[-1] / res.cage_speed_nominal[-1] - 1) < 0.05
 
 
-def test_near_zero_load():
+def test_near_zero_load_does_not_blow_up():
+    """20 N: the balls start at the pure-rolling speed of their split contact angles (~1.3x
+    the nominal cage speed), so the centrifugal force jumps above the quasi-static start's
+    and the contacts ring; the inner ones (1.5 N quasi-static) reach several times that.
+    All that holds is no blow-up: every contact below twice the outer load the fastest
+    orbit's centrifugal force plus the axial share F_a/(Z sin a0) can produce (reached:
+    ~0.65 of it)."""
     res = run(0.003, axialForce=20.0)
-    assert_bounded(res, 20.0, W)
+    share = 20.0 / (B.balls * math.sin(B.contact_angle))
+    assert_no_blow_up(res, 2.0 * (share + centrifugal(res.ball_orbital_speed.max())), W)
 
 
 def test_unloaded_zone_combined_load():
     """Slow speed: the balls opposite the radial load (almost) leave the inner race."""
     rpm = 100.0
     res = run(0.003, rpm=rpm, axialForce=2200.0, radialForce=2000.0)
-    assert_bounded(res, 2200.0 + 2000.0, rpm * math.pi / 30)
+    assert_bounded(res, quasi_static(2200.0, 2000.0, rpm=rpm), rpm * math.pi / 30, steady=True)
     qs = solve_load_distribution(B, axial=2200.0, radial=2000.0, rpm=rpm)
     assert res.inner["load"][-1].min() < 1.0  # unloaded zone
     assert res.inner["load"][-1].max() == pytest.approx(qs.inner_load.max(), rel=0.05)
 
 
 def test_10000_rpm():
+    """The balls orbit at the pure-rolling speed of their split angles (~1.33x nominal), so
+    the outer contacts carry the centrifugal force of that orbit: bounded by the quasi-static
+    outer load at the fastest orbit seen. The inner race is thrown off and back (axial
+    contact force swinging 0-7 kN in the first 0.3 ms): for the inner contacts only
+    no blow-up, below the same outer bound."""
     w = 10000 * math.pi / 30
     res = run(0.001, rpm=10000.0, axialForce=1300.0)
-    assert_bounded(res, 1300.0, w)
+    _inner, outer = quasi_static(1300.0, rpm=10000.0, cage_speed=float(res.ball_orbital_speed.max()))
+    assert outer > centrifugal(res.ball_orbital_speed.max())  # it carries the centrifugal force
+    assert res.outer["load"].max() < 1.25 * outer and res.outer["load"].max() > outer / 1.25
+    assert_no_blow_up(res, 1.25 * outer, w)
     # centrifugal dominance: the outer contacts carry more than the inner ones
     assert res.outer["load"][-1].mean() > res.inner["load"][-1].mean() + 0.5 * B.ball_mass * B.pitch_radius \
         * (0.4 * w) ** 2
@@ -97,8 +154,9 @@ def test_speed_ramp_from_rest():
     def rpm(t):
         return RPM * min(max(t, 0.0) / ramp, 1.0)
 
-    res = run(0.004, innerRace=Driven(rpm), axialForce=1300.0)
-    assert_bounded(res, 1300.0, W)
+    t_end = 0.004
+    res = run(t_end, innerRace=Driven(rpm), axialForce=1300.0)
+    assert_bounded(res, quasi_static(1300.0, rpm=rpm(t_end)), rpm(t_end) * math.pi / 30, steady=True)
     expected = np.array([rpm(t) for t in res.time]) * math.pi / 30
     assert np.allclose(res.inner_speed, expected, rtol=0, atol=1e-3 * W)
 
@@ -106,14 +164,22 @@ def test_speed_ramp_from_rest():
 def test_axial_load_step():
     """0.2 -> 3 kN at 1 ms: the inner race rings on the contact stiffness, but averaged over
     the 2.5 ms after the step the inner contacts carry the new load axially (the race's
-    momentum change over the window is small against 3 kN x 2.5 ms)."""
+    momentum change over the window is small against 3 kN x 2.5 ms).
+
+    Peak loads: a load applied suddenly drives an elastic system to at most the static
+    response of the old load plus twice the step (linear spring; damping lowers it),
+    here 0.2 + 2 x 2.8 = 5.8 kN, with the centrifugal force of the fastest orbit seen; the
+    25 % margin covers the Hertz contacts' stiffening (reached: ~0.97 inner, ~1.04 outer of
+    that reference). At least the new static load is reached."""
     step_time = 0.001
 
     def axial(t):
         return 200.0 if t < step_time else 3000.0
 
     res = run(0.004, axialForce=axial)
-    assert_bounded(res, 3000.0, W)
+    assert_bounded(res, quasi_static(200.0 + 2 * 2800.0, cage_speed=float(res.ball_orbital_speed.max())), W)
+    new_static = quasi_static(3000.0)
+    assert res.inner["load"].max() > new_static[0] and res.outer["load"].max() > new_static[1]
     after = res.time > step_time + 0.0005
     carried = (res.inner["load"] * np.sin(res.inner["contact_angle"])).sum(axis=1)[after].mean()
     assert carried == pytest.approx(3000.0, rel=0.1)
@@ -121,7 +187,7 @@ def test_axial_load_step():
 
 def test_stiff_cage():
     res = run(0.003, cage=CageModel(stiffness=1e9), axialForce=1300.0)
-    assert_bounded(res, 1300.0, W)
+    assert_bounded(res, quasi_static(1300.0), W, steady=True)
     assert abs(res.cage_speed[-1] / res.cage_speed_nominal[-1] - 1) < 0.05
 
 
@@ -135,7 +201,7 @@ def test_very_heavy_load_stops_with_a_diagnosis():
         msg = str(err)
         assert "heaviest contact" in msg and "Barus exponent" in msg and "smaller step" in msg
     else:  # if it ever runs, it must be bounded
-        assert_bounded(res, 1e5, W)
+        assert_bounded(res, quasi_static(1e5), W)
 
 
 def test_impossible_load_pushes_a_ball_out():

@@ -21,7 +21,10 @@ def test_curvature_radii_reference_bearing_by_hand():
 
 
 def test_free_angle_and_clearance_are_one_quantity():
-    assert B.diametral_clearance == pytest.approx(0.468e-3, abs=0.5e-6)  # MODEL.md §2
+    # P_d = 2 (f_i + f_o - 1) D (1 - cos a0); MODEL.md §2 prints 0.468 mm
+    p_d = 2 * (0.52 + 0.52 - 1) * 25e-3 * (1 - math.cos(math.radians(40)))
+    assert B.diametral_clearance == pytest.approx(p_d, rel=1e-12)
+    assert abs(p_d * 1e3 - 0.468) <= 0.0005
     angle = geometry.free_contact_angle(B.diametral_clearance, 0.52, 0.52, 25e-3)
     assert angle == pytest.approx(math.radians(40), rel=1e-12)
     assert geometry.free_contact_angle(0.0, 0.52, 0.53, 11.1e-3) == 0.0  # deep groove, P_d = 0
