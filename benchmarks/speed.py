@@ -8,6 +8,14 @@ is printed on its own. The default is one whole 0.1 s per scene, once (Exudyn's 
 alone takes ~2.5 min); ``--time 0.02 --repeat 3`` gives a quicker, interleaved median.
 
     python benchmarks/speed.py [--time 0.1] [--repeat 1]
+
+``--matrix`` instead runs the heavily-loaded and high-speed case matrix (issue 14: cases (a)-(f),
+each at the defaults from the package's start state, with the half-step error estimate) and
+prints wall time, steps against the nominal count (more steps = step cuts), Newton
+iterations, Jacobians, the estimate of the kinematic cage slip and the cost relative to
+case (a) in the same run ((f) also per cage revolution):
+
+    python benchmarks/speed.py --matrix [--time 0.1] [--cases a,b,e1]
 """
 import argparse
 import time
@@ -65,11 +73,82 @@ def exudyn_ball_bearing(sim_time, step=1e-5):
     return time.perf_counter() - start
 
 
+def _deep_groove():
+    """The README's deep-groove example bearing (6205-size balls, 10 um diametral clearance)."""
+    from exudyn_bearing import Bearing
+
+    return Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                  inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+
+
+def _spindle():
+    """A spindle-type bearing: Z 18, D 7.144 mm, d_m 54 mm, conformity 0.52/0.52, 15 deg."""
+    from exudyn_bearing import Bearing
+
+    return Bearing(balls=18, ball_diameter=7.144e-3, pitch_diameter=54e-3, inner_conformity=0.52,
+                   outer_conformity=0.52, contact_angle=np.radians(15.0))
+
+
+#: name: (description, bearing factory or None for the reference, axial N, radial N, rpm)
+MATRIX = {
+    "a": ("reference, 1.3 kN axial, 1800 rpm", None, 1300.0, 0.0, 1800.0),
+    "b": ("reference, 2.2 kN + 2 kN radial, 1800 rpm", None, 2200.0, 2000.0, 1800.0),
+    "c": ("reference, 3 kN + 6 kN radial, 1800 rpm", None, 3000.0, 6000.0, 1800.0),
+    "d": ("reference, 10 kN axial, 1800 rpm", None, 10000.0, 0.0, 1800.0),
+    "e1": ("deep groove, 1 kN radial + 200 N axial, 3000 rpm", _deep_groove, 200.0, 1000.0, 3000.0),
+    "e2": ("deep groove, 2.5 kN radial, 3000 rpm", _deep_groove, 0.0, 2500.0, 3000.0),
+    "f1": ("spindle, 300 N axial, 12 000 rpm", _spindle, 300.0, 0.0, 12000.0),
+    "f2": ("spindle, 300 N + 600 N radial, 12 000 rpm", _spindle, 300.0, 600.0, 12000.0),
+}
+
+
+def matrix(sim_time, names, law=None):
+    from exudyn_bearing import simulate
+    from exudyn_bearing.errors import BearingSimulationError
+
+    settings = SolverSettings()
+    nominal = int(round(sim_time / settings.step))
+    rows, wall_a = [], None
+    for name in names:
+        text, factory, axial, radial, rpm = MATRIX[name]
+        kw = {} if factory is None else {"bearing": factory()}
+        if law is not None:
+            kw["contact_law"] = law
+        start = time.perf_counter()
+        try:
+            run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
+        except (BearingSimulationError, ValueError) as err:
+            rows.append(f"| {name} | {text} | fails after {time.perf_counter() - start:.1f} s: "
+                        f"{str(err)[:160]} | | | | | |")
+            continue
+        wall = run.wall_time_s
+        wall_a = wall if name == "a" else wall_a
+        est = run.error_estimate["kinematic_cage_slip_percent"]
+        revs = run.cage_speed * sim_time / (2 * np.pi)
+        ratio = f"{wall / wall_a:.2f}" if wall_a else "-"
+        rows.append(f"| {name} | {text} | {wall / sim_time * 0.1:.2f} s ({wall / max(revs, 1e-12):.2f} s per cage rev) "
+                    f"| {run.steps} / {nominal} | {run.newton_iterations} | {run.jacobian_updates} | "
+                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {ratio} |")
+    print(f"| case | scene | wall per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage slip "
+          f"± half-step estimate | wall / (a) |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    print("\n".join(rows))
+    print(f"({sim_time:g} s simulated per case, default settings, each from the package's start state; the "
+          f"estimate's own run is not in the wall time)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--time", type=float, default=0.1, help="simulated time per scene, s")
     parser.add_argument("--repeat", type=int, default=1, help="runs per scene; the median wall time is reported")
+    parser.add_argument("--matrix", action="store_true", help="the heavily-loaded/high-speed case matrix")
+    parser.add_argument("--cases", default=",".join(MATRIX), help="matrix cases, comma-separated")
+    parser.add_argument("--traction", default=None, help="matrix: ContactLaw(traction=...) for every case")
     args = parser.parse_args()
+    if args.matrix:
+        law = ContactLaw(traction=args.traction) if args.traction else None
+        matrix(args.time, [c.strip() for c in args.cases.split(",") if c.strip()], law)
+        return
     # interleaved repeats: a burst of load on the shared machine hits all scenes alike
     walls = {"ours": [], "numpy": [], "exudyn": []}
     build = None

@@ -294,10 +294,9 @@ class BearingConnector:
             if self.first_non_finite is None:
                 race, ball = ("inner", "outer")[deepest // self.z], deepest % self.z
                 self.first_non_finite = (
-                    f"t = {t:.6g} s: ball {ball} pushed out of its groove at the {race} race: elastic approach "
-                    f"{pen[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the ball "
-                    f"diameter (Q = {load[deepest]:.4g} N); the load is beyond what the bearing "
-                    "can carry")
+                    f"t = {t:.6g} s: a solver trial state pushed ball {ball} out of its groove at the {race} race "
+                    f"(elastic approach {pen[deepest] * 1e3:.3g} mm > {100 * self.max_penetration:g} % of the "
+                    f"ball diameter, Q = {load[deepest]:.4g} N)")
             return np.full(6 * self.n_nodes, np.nan)
         out = out + react.sum(axis=0)
         if not details:
@@ -474,6 +473,40 @@ class BearingConnector:
         return (f"t = {t:.6g} s: heaviest contact {race} race / ball {ball}: Q = {loads[k]:.4g} N, "
                 f"p_max = {p_max / 1e9:.3g} GPa, Barus exponent c_etaP p_max = "
                 f"{self.lubricant.pressure_viscosity * p_max:.3g}; largest spin moment {mz.max():.3g} N m")
+
+    #: p_max above which a bearing steel contact is overloaded (plastic flow; ISO 76's static
+    #: limit for ball bearings is 4.2 GPa), Pa
+    overload_pressure = 4.0e9
+
+    def capacity(self, t) -> str:
+        """Whether the forces applied at ``t`` overload the bearing, as a sentence: the
+        quasi-static load distribution (MODEL.md §4) for them, its heaviest ball load and
+        p_max against :attr:`overload_pressure` and its elastic approach against
+        :attr:`max_penetration`. Empty where no forces are applied through the bearing."""
+        from .quasistatic import QuasiStaticError, solve_load_distribution
+
+        force = self.rotation.T @ np.asarray(self.applied_force(t), dtype=float)
+        axial, radial = float(force[2]), float(np.hypot(force[0], force[1]))
+        if axial <= 0 and radial <= 0:
+            return ""
+        what = f"the applied load ({axial:.4g} N axial, {radial:.4g} N radial)"
+        try:
+            qs = solve_load_distribution(self.bearing, axial=max(axial, 0.0), radial=radial)
+        except (QuasiStaticError, ValueError) as err:
+            return f"{what} has no quasi-static equilibrium ({err}): the bearing cannot carry it"
+        worst = []
+        for race, loads, angles in (("inner", qs.inner_load, qs.inner_contact_angle),
+                                    ("outer", qs.outer_load, qs.outer_contact_angle)):
+            k = int(np.argmax(loads))
+            con = self.bearing.hertz(angles[k], race)
+            worst.append((float(con.max_pressure(loads[k])), float(con.deflection(loads[k])), race, float(loads[k])))
+        p_max, approach, race, q = max(worst)
+        if p_max > self.overload_pressure or approach > self.max_penetration * self.bearing.ball_diameter:
+            return (f"{what} overloads the bearing: quasi-statically {q:.4g} N on the heaviest {race} contact, "
+                    f"p_max {p_max / 1e9:.3g} GPa (limit {self.overload_pressure / 1e9:g} GPa), elastic approach "
+                    f"{1e3 * approach:.3g} mm")
+        return (f"{what} is within the bearing's capacity (quasi-statically p_max {p_max / 1e9:.3g} GPa < "
+                f"{self.overload_pressure / 1e9:g} GPa): the solver, not the bearing, failed")
 
     def _non_finite(self, t, pos, vel, omega) -> str:
         """Where the state first became non-finite, as a sentence."""

@@ -144,12 +144,19 @@ def _where(handles, mbs=None) -> str:
         except Exception:  # noqa: BLE001 - diagnosis is best effort, never masks the failure
             pass
     parts += ["first rejected state: " + h.connector.first_non_finite for h in handles if h.connector.first_non_finite]
+    if mbs is not None:
+        for h in handles:
+            try:
+                verdict = h.connector.capacity(float(mbs.systemData.GetTime()))
+            except Exception:  # noqa: BLE001 - best effort, as above
+                verdict = ""
+            if verdict:
+                parts.insert(0, verdict)
     return " (" + "; ".join(parts) + ")" if parts else ""
 
 
 _ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this step. Use a smaller step "
-           "(SolverSettings(step=...)), a limiting shear stress (ContactLaw(limiting_shear=0.07)), or check "
-           "that the load is within the bearing's capacity")
+           "(SolverSettings(step=...)) or a limiting shear stress (ContactLaw(limiting_shear=0.07))")
 
 
 def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverSettings()) -> RunInfo:
@@ -176,9 +183,10 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
                               showCausingItems=False)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
-        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s"
-                                     f"{_where(handles, mbs)}: {err}"
-                                     + (_ADVICE if settings.implicit else "")) from err
+        where = _where(handles, mbs)
+        overloaded = "overloads the bearing" in where or "cannot carry it" in where
+        raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s{where}: {err}"
+                                     + (_ADVICE if settings.implicit and not overloaded else "")) from err
     finally:
         exu.config.printToConsole = printing
     wall = _time.perf_counter() - start
@@ -191,7 +199,7 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
                                      f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not np.all(np.isfinite(q)) or not np.all(np.isfinite(mbs.systemData.GetODE2Coordinates_t())):
-        raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles)}: "
+        raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles, mbs)}: "
                                      "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
     return info
 

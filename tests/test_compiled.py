@@ -189,7 +189,7 @@ def test_single_state_path_hands_bad_states_to_the_checked_path():
     deep = q - con.reference
     deep[:2] += 0.05 * con.bearing.ball_diameter * q[:2] / np.hypot(*q[:2])  # ball 0 radially out by 5 % of D
     assert np.all(np.isnan(con.residual_forces(0.0, deep, qt)))
-    assert "ball 0 pushed out of its groove at the outer race" in con.first_non_finite
+    assert "pushed ball 0 out of its groove at the outer race" in con.first_non_finite
 
 
 def test_spin_moment_term_matches_numpy_path():
