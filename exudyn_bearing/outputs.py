@@ -5,13 +5,23 @@ the solver used, so a scene pays for outputs only when it asks for them.
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from contact.kinematics import cross, rolling_cage_speed
 
-__all__ = ["BearingResults", "compute_results", "cage_slip", "settled"]
+__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "TRACTION_COEFFICIENT_LIMIT",
+           "TractionCoefficientWarning"]
+
+#: Traction coefficient |f|/Q above which no real oil transmits the traction (MODEL.md §8:
+#: measured EHL traction coefficients stay below ~0.1-0.15); a run above it gets a warning.
+TRACTION_COEFFICIENT_LIMIT = 0.15
+
+
+class TractionCoefficientWarning(UserWarning):
+    """A contact's traction coefficient exceeded :data:`TRACTION_COEFFICIENT_LIMIT`."""
 
 
 def cage_slip(reference_speed, cage_speed):
@@ -69,6 +79,10 @@ class BearingResults:
     cage_eccentricity: np.ndarray = None
     #: guiding-land contact force on the cage, magnitude (T,), N
     cage_land_force: np.ndarray = None
+    #: largest traction coefficient |f|/Q of any loaded contact over the run (MODEL.md §8)
+    max_traction_coefficient: float = 0.0
+    #: where it exceeded TRACTION_COEFFICIENT_LIMIT (also issued as a warning), else None
+    traction_warning: str | None = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -87,6 +101,7 @@ class BearingResults:
             "max_inner_load": float(np.max(self.inner["load"][m])),
             "max_outer_load": float(np.max(self.outer["load"][m])),
             "max_inner_slip": float(np.max(self.inner["slip"][m])),
+            "max_traction_coefficient": float(self.max_traction_coefficient),
             "settled": self.settled(settle_tolerance_percent),
         }
 
@@ -160,10 +175,37 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
             c["spin"][k], c["film"][k] = kin.spin, f.film_thickness
             c["traction_rolling"][k], c["traction_transverse"][k] = f.traction_rolling, f.traction_transverse
             c["spin_moment"][k], c["heat"][k], c["max_pressure"][k] = f.spin_moment, f.heat, f.max_pressure
+    mu_max, warning = _traction_coefficient(time, contacts)
     nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(arrays["inner_speed"], arrays["outer_speed"])])
     cage = arrays["cage_speed"]
     kin_slip = np.mean(cage_slip(per_ball["kin"], cage[:, None]), axis=1)
     return BearingResults(np.asarray(time), arrays["inner_speed"], arrays["outer_speed"], cage, nominal,
                           cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
                           w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
-                          race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1])
+                          race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1], mu_max,
+                          warning)
+
+
+def _traction_coefficient(time, contacts, threshold=None):
+    """Largest |f|/Q over the loaded contacts (Q > 0.1 % of the heaviest) and, above
+    ``threshold`` (default :data:`TRACTION_COEFFICIENT_LIMIT`), a sentence saying where; the
+    sentence is also issued once as a :class:`TractionCoefficientWarning`."""
+    threshold = TRACTION_COEFFICIENT_LIMIT if threshold is None else threshold
+    best = (0.0, None)
+    for race, c in contacts.items():
+        load = c["load"]
+        loaded = load > 1e-3 * max(float(np.max(load, initial=0.0)), 1e-300)
+        mu = np.where(loaded, np.hypot(c["traction_rolling"], c["traction_transverse"]) / np.where(loaded, load, 1.0),
+                      0.0)
+        k = np.unravel_index(int(np.argmax(mu)), mu.shape) if mu.size else None
+        if k is not None and mu[k] > best[0]:
+            best = (float(mu[k]), (race, k, float(load[k]), float(c["max_pressure"][k])))
+    mu_max, where = best
+    if mu_max <= threshold or where is None:
+        return mu_max, None
+    race, (step, ball), load, p_max = where
+    text = (f"traction coefficient {mu_max:.3g} > {threshold:g} at the {race} race, ball {ball}, t = "
+            f"{time[step]:.6g} s (Q = {load:.4g} N, p_max = {p_max / 1e9:.3g} GPa): no real oil transmits "
+            "that much; the pure Crook law has no limiting shear stress (MODEL.md §6a, §8)")
+    warnings.warn(text, TractionCoefficientWarning, stacklevel=3)
+    return mu_max, text
