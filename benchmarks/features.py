@@ -18,7 +18,8 @@ from exudyn_bearing.connector import CageModel
 from exudyn_bearing.runner import SolverSettings, run_solver
 
 OPTIONS = {
-    "full model (Crook EHD, spin moment, rigid cage, drag)": {},
+    "full model (Crook EHD with limiting shear, spin moment, rigid cage, drag)": {},
+    "pure Crook (the paper's law, no limiting shear)": dict(contactLaw=ContactLaw(traction="crook")),
     "isothermal Newtonian traction": dict(contactLaw=ContactLaw(traction="newtonian")),
     "dry Coulomb traction": dict(contactLaw=ContactLaw(traction="coulomb")),
     "no traction (normal forces only)": dict(contactLaw=ContactLaw(traction="none")),

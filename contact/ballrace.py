@@ -15,9 +15,11 @@ from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
 
-__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS"]
+__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS", "CROOK_MODELS"]
 
-TRACTION_MODELS = ("crook", "newtonian", "coulomb", "none")
+TRACTION_MODELS = ("crook-limited", "crook", "newtonian", "coulomb", "none")
+#: the models evaluated by :func:`contact.traction.crook_traction`
+CROOK_MODELS = ("crook-limited", "crook")
 
 
 @dataclass(frozen=True)
@@ -56,19 +58,23 @@ class ContactLaw:
 
     Parameters
     ----------
-    traction : {'crook', 'newtonian', 'coulomb', 'none'}
-        Crook thermal EHD traction (MODEL.md §6, the paper's model), its isothermal
-        Newtonian limit (:func:`contact.traction.newtonian_traction`, small slip only),
-        regularized dry Coulomb friction (:func:`contact.friction.coulomb_traction`), or
-        normal forces only. Models not chosen cost nothing.
+    traction : {'crook-limited', 'crook', 'newtonian', 'coulomb', 'none'}
+        'crook-limited' (default): Crook thermal EHD traction with the smooth limiting shear
+        stress |tau| = tau_L tanh(|tau_Crook| / tau_L), tau_L = Lambda p (MODEL.md §6a), Lambda
+        the lubricant's ``limiting_shear_coefficient`` (0.047 for the reference oil);
+        'crook': the paper's pure Crook law (MODEL.md §6); its isothermal Newtonian limit
+        (:func:`contact.traction.newtonian_traction`, small slip only); regularized dry
+        Coulomb friction (:func:`contact.friction.coulomb_traction`); or normal forces only.
+        Models not chosen cost nothing.
     spin_moment : bool
         Apply the traction spin moment M_z (P16).
     quadrature_order : int
         Order of the traction quadrature (:func:`contact.traction.crook_traction`).
     fast_quadrature : bool
         The fixed-size fast rule (worst error 4.6e-4 of the force scale at order 16 on
-        reference-bearing states, ~5x cheaper; ``benchmarks/traction_speed.py``) or the
-        accurate adaptive rule.
+        reference-bearing states for pure Crook, 6.8e-3 with the limiting shear, ~5x
+        cheaper; ``benchmarks/traction_speed.py``, MODEL.md §6a) or the accurate adaptive
+        rule.
     damping_ratio : float
         Normal contact damping as a fraction of critical for the ball mass on the
         linearized Hertz stiffness (damps the ~0.2 ms contact oscillations; the EHD film
@@ -77,15 +83,19 @@ class ContactLaw:
         Floor on the Hamrock–Dowson film thickness, m (the formula gives 0 at zero
         entrainment speed, e.g. a start from rest).
     limiting_shear : float or None
-        Limiting shear-stress coefficient Lambda (tau <= Lambda p); None: off (paper).
+        Explicit limiting shear-stress coefficient Lambda of the smooth cap (MODEL.md §6a),
+        overriding the lubricant's ``limiting_shear_coefficient`` for 'crook-limited' and
+        applied to 'crook' too; None: the lubricant's value ('crook-limited') or no cap
+        ('crook'). See :meth:`limiting_shear_for`.
     hertz_method : {'fit', 'exact'}
     friction_coefficient, friction_regularization : float
         μ and the slip speed u_r (m/s) that smooths stick–slip, for ``traction='coulomb'``.
     compiled : bool
         Evaluate the bearing's contacts with the numba-compiled kernels
         (:mod:`contact.compiled`, the same equations without per-call numpy overhead, ~4x
-        faster) where they cover the law: Crook by the fast rule or no traction, Hertz fits,
-        no limiting shear. Otherwise, or with False, the numpy functions of this package.
+        faster) where they cover the law: Crook (with or without the limiting shear) by the
+        fast rule or no traction, Hertz fits. Otherwise, or with False, the numpy functions
+        of this package.
     max_barus_exponent : float
         Bound on the Barus exponent c_etaP p of the traction viscosity (MODEL.md §6): the
         traction is evaluated with p_max <= max_barus_exponent / c_etaP (3.4 GPa for the
@@ -96,7 +106,7 @@ class ContactLaw:
         exp() into inf/NaN.
     """
 
-    traction: str = "crook"
+    traction: str = "crook-limited"
     spin_moment: bool = True
     quadrature_order: int = 16
     fast_quadrature: bool = True
@@ -126,6 +136,19 @@ class ContactLaw:
         if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
             raise ValueError(f"limiting_shear must be positive or None, got {self.limiting_shear!r}")
 
+    def limiting_shear_for(self, lubricant) -> float | None:
+        """Lambda of the smooth limiting shear this law applies with ``lubricant``
+        (MODEL.md §6a), or None for no cap: ``limiting_shear`` if given (Crook laws), else the
+        lubricant's ``limiting_shear_coefficient`` for 'crook-limited' (0 = none)."""
+        if self.traction not in CROOK_MODELS:
+            return None
+        if self.limiting_shear is not None:
+            return float(self.limiting_shear)
+        if self.traction == "crook-limited":
+            lam = float(getattr(lubricant, "limiting_shear_coefficient", 0.0))
+            return lam if lam > 0.0 else None
+        return None
+
 
 @dataclass(frozen=True)
 class ContactForces:
@@ -148,7 +171,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
 
     Normal: Q = K delta^(3/2) + c d(delta)/dt, c = 2 zeta sqrt(1.5 K delta^(1/2) m),
     clipped at 0 (a contact cannot pull). Traction on the loaded contacts from the
-    Crook model with the Hamrock–Dowson central film (at least ``min_film_thickness``).
+    law's model (Crook, by default with the smooth limiting shear of MODEL.md §6a) with the
+    Hamrock–Dowson central film (at least ``min_film_thickness``).
     """
     n_con = kin.penetration.shape[0]
     r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
@@ -175,7 +199,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz
-    elif law.traction in ("crook", "newtonian") and np.any(loaded):
+    elif law.traction in CROOK_MODELS + ("newtonian",) and np.any(loaded):
         from .traction import crook_traction, newtonian_traction
 
         idx = np.flatnonzero(loaded)
@@ -193,8 +217,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
                                     h[idx], lubricant)
         else:
             tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
-                                h[idx], lubricant, order=law.quadrature_order, limiting_shear=law.limiting_shear,
-                                fast=law.fast_quadrature)
+                                h[idx], lubricant, order=law.quadrature_order,
+                                limiting_shear=law.limiting_shear_for(lubricant), fast=law.fast_quadrature)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz

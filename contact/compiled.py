@@ -6,7 +6,8 @@ right-hand side spends ~1 ms of its ~1.7 ms in numpy bookkeeping on arrays of 32
 
 * :func:`race_contacts` — kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), Hertz
   fits (§3, :func:`contact.hertz.hertz_contact` with ``method='fit'``), damped normal load,
-  Hamrock–Dowson film (§5, P17) and the Crook traction by the fast rule (§6, P12–P16;
+  Hamrock–Dowson film (§5, P17) and the Crook traction by the fast rule (§6, P12–P16,
+  optionally with the smooth limiting shear of §6a;
   :func:`contact.traction.crook_traction` with ``fast=True``: the same node tables, float32
   along each ray as there, float64 for the rare ray that overflows float32), force and
   moment on the ball as :func:`contact.ballrace.ball_race_forces`;
@@ -38,7 +39,7 @@ from llvmlite import ir  # noqa: E402
 from numba import njit, prange, types  # noqa: E402
 from numba.extending import intrinsic  # noqa: E402
 
-from . import traction as _tr
+from . import traction_fast as _tr
 
 __all__ = ["crook_fast", "crook_tables", "race_contacts", "race_contacts_parallel", "cage_and_drag",
            "land_forces", "rotation_matrices"]
@@ -56,7 +57,7 @@ _PSI_MIN = 1e-12  # the fast rule's ψ floor (keeps G(ψ) finite at the pole)
 
 
 def crook_tables(order: int = 16):
-    """The fast rule's node tables (:func:`contact.traction._fast_tables`): cosine and sine
+    """The fast rule's node tables (:func:`contact.traction_fast._fast_tables`): cosine and sine
     of the ray angles and their weights (float64), radial nodes and weights in float32 and
     float64 (same values): (cos_psi, sin_psi, wpsi, rho32, w32, rho64, w64)."""
     tab = _tr._fast_tables(int(order))
@@ -160,11 +161,82 @@ def _rays32(ir, lam, a0, rho_tab, w_tab, ray, k):
             k2[d] += wg * pr
 
 
+# Smooth limiting shear (MODEL.md §6a): τ = τ_L tanh(x) along u, x = |τ_C|/τ_L. tanh(x) for
+# x <= _CAP_X as x P(x²)/Q(x²), a minimax-weighted least-squares rational fit of tanh(x)/x
+# of degree 3/3 in x² (P(0) = Q(0) = 1, so the law is Crook's as x -> 0), x P/Q at _CAP_X
+# (= tanh to 2.3e-6) beyond: relative error below 3e-6 everywhere (tests/test_limiting_shear.py),
+# far below the rule's own error. No exp and one division, so the ray loop still vectorizes.
+_CAP_X = 6.5
+_CAP_P = (1.0, 0.1244151739162312, 0.0024030125261559894, 4.54511452920797e-06)
+_CAP_Q = (1.0, 0.45774726077250827, 0.021654500612336477, 0.00015623762350085177)
+_CP32 = tuple(_F(c) for c in _CAP_P)
+_CQ32 = tuple(_F(c) for c in _CAP_Q)
+_CAP_X32 = _F(_CAP_X)
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
-def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
-    """Sums along one ray of g W ρ^j, j = 0, 1, 2, as :func:`_rays32` for one ray in the
-    tables' precision: float64 for the rare ray whose ψ overflows float32. ``scratch``
-    (dtype of the tables) casts the ray constants."""
+def _capped_node(rm, r2, cq, br, pr, lamh32, a032, itlc32, tlc32):
+    """g of one node with the smooth limiting shear (float32; see :func:`_rays32_capped`)."""
+    p0, p1, p2, p3 = _CP32
+    q0, q1, q2, q3 = _CQ32
+    rho = rm * pr
+    sg = math.sqrt((rm - rho) * (rho + r2))  # σ = p/p_max
+    eh = _exp32(lamh32 * sg)  # √(η/η_T)
+    psi = ((rho * cq + br) * rho + a032) * (eh * eh)
+    sq = math.sqrt(psi)
+    rt = math.sqrt(_F1 + psi)
+    z = sq + psi / (_F1 + rt)
+    u1 = _F1 + z
+    lz = _log32(u1) * z  # asinh(s) (u1 − 1), see _rays32
+    # x = τ_C'/τ_L' = asinh(s) e^{λσ/2}/(√(1 + ψ) tlc σ); g = τ_L' tanh(x)/|u'| with
+    # |u'| = s e^{−λσ/2}: one division each
+    x = lz * eh * itlc32 / ((u1 - _F1) * rt * sg)
+    xc = min(x, _CAP_X32)
+    y = xc * xc
+    num = ((p3 * y + p2) * y + p1) * y + p0
+    den = ((q3 * y + q2) * y + q1) * y + q0
+    return (tlc32 * sg * eh) * xc * num / (sq * den)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS)
+def _rays32_capped(ir, lam, a0, tlc, rho_tab, w_tab, ray, k):
+    """:func:`_rays32` with the smooth limiting shear (MODEL.md §6a): g tanh(x)/x with
+    x = τ_C'/τ_L', τ_C' = g √(A + ρ (B + C ρ)) = asinh(s) e^{λσ/2}/√(1 + ψ) and τ_L' = tlc σ
+    (the rule's units: τ h c1(η_T)/η_T; ``tlc`` = Λ p_max h c1(η_T)/η_T). Two radial nodes
+    per pass over the rays: the cap lengthens each node's dependency chain, and with ~5
+    vectors of rays per pass the second node's independent work hides it."""
+    rm, r2, cq, br = ray[0], ray[1], ray[2], ray[3]
+    k0, k1, k2 = k[0], k[1], k[2]
+    lamh32, a032, itlc32, tlc32 = _F(0.5 * lam), _F(a0), _F(1.0 / tlc), _F(tlc)
+    k[:] = 0.0
+    n_rad = rho_tab.shape[0]
+    for r in range(0, n_rad - 1, 2):
+        pa, wa = rho_tab[r, ir], w_tab[r, ir]
+        pb, wb = rho_tab[r + 1, ir], w_tab[r + 1, ir]
+        for d in range(rm.shape[0]):
+            ga = wa * _capped_node(rm[d], r2[d], cq[d], br[d], pa, lamh32, a032, itlc32, tlc32)
+            gb = wb * _capped_node(rm[d], r2[d], cq[d], br[d], pb, lamh32, a032, itlc32, tlc32)
+            k0[d] += ga + gb
+            ga *= pa
+            gb *= pb
+            k1[d] += ga + gb
+            k2[d] += ga * pa + gb * pb
+    if n_rad % 2:
+        pa, wa = rho_tab[n_rad - 1, ir], w_tab[n_rad - 1, ir]
+        for d in range(rm.shape[0]):
+            ga = wa * _capped_node(rm[d], r2[d], cq[d], br[d], pa, lamh32, a032, itlc32, tlc32)
+            k0[d] += ga
+            ga *= pa
+            k1[d] += ga
+            k2[d] += ga * pa
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _ray_sums(rmax, r2, cq, br, a0, lam, tlc, ir, rho_tab, w_tab, scratch):
+    """Sums along one ray of g W ρ^j, j = 0, 1, 2, as :func:`_rays32` (``tlc`` > 0: with
+    the limiting shear of :func:`_rays32_capped`) for one ray in the tables' precision:
+    float64 for the rare ray whose ψ overflows float32. ``scratch`` (dtype of the tables)
+    casts the ray constants."""
     scratch[0] = rmax
     scratch[1] = r2
     scratch[2] = cq
@@ -189,6 +261,10 @@ def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
         z = sq + psi / (one + rt)
         u1 = one + z
         g = math.log(u1) * (z / (u1 - one)) / (sq * rt) * e
+        if tlc > 0.0:  # smooth limiting shear (MODEL.md §6a)
+            x = g * math.sqrt(psi / e) / (tlc * sg)
+            if x > 0.0:
+                g *= math.tanh(x) / x
         wg = w_tab[r, ir] * g
         k0 += wg
         wg *= pr
@@ -198,9 +274,11 @@ def _ray_sums(rmax, r2, cq, br, a0, lam, ir, rho_tab, w_tab, scratch):
 
 
 @njit(cache=True, error_model="numpy")
-def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64):
+def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
+               w64):
     """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
-    :func:`contact.traction._fast_crook`, whose steps this follows one contact at a time)."""
+    :func:`contact.traction_fast._fast_crook`, whose steps this follows one contact at a time),
+    with the smooth limiting shear Λ = ``lam_s`` (MODEL.md §6a; 0: none)."""
     lo = min(a, b)
     if not lo > 0.0:
         return 0.0, 0.0, 0.0, 0.0
@@ -280,7 +358,11 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, 
         geo[4, d] = bc
         geo[5, d] = as_
     k = np.empty((3, ray.shape[1]), np.float32)
-    _rays32(ir, lam, a0, rho32, w32, ray, k)
+    tlc = lam_s * pm * hh * math.sqrt(cth) / eta_t  # τ_L' = tlc σ in the rule's units
+    if tlc > 0.0:
+        _rays32_capped(ir, lam, a0, tlc, rho32, w32, ray, k)
+    else:
+        _rays32(ir, lam, a0, rho32, w32, ray, k)
     s64 = np.empty(8)
     S0 = 0.0
     Sx = 0.0
@@ -291,7 +373,7 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, 
         rmax, bc, as_ = geo[0, d], geo[4, d], geo[5, d]
         k0, k1, k2 = float(k[0, d]), float(k[1, d]), float(k[2, d])
         if not (abs(k0) < np.inf and abs(k1) < np.inf and abs(k2) < np.inf):
-            k0, k1, k2 = _ray_sums(rmax, geo[1, d], geo[2, d], geo[3, d], a0, lam, ir, rho64, w64, s64)
+            k0, k1, k2 = _ray_sums(rmax, geo[1, d], geo[2, d], geo[3, d], a0, lam, tlc, ir, rho64, w64, s64)
         w0 = wpsi_tab[d, ie] * rmax * rmax * scale
         S0 += k0 * w0
         w0 *= rmax
@@ -309,23 +391,24 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, 
 
 
 @njit(cache=True, error_model="numpy")
-def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64,
-                out):
+def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
+                w64, out):
     for i in range(ux.shape[0]):
         out[0, i], out[1, i], out[2, i], out[3, i] = _crook_one(
-            ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32,
-            w32, rho64, w64)
+            ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab,
+            rho32, w32, rho64, w64)
 
 
-def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16):
+def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16, limiting_shear=None):
     """Crook traction (f_x, f_y, M_z, heat) of n contacts by the compiled fast rule, each
-    an array (n,) (MODEL.md §6). Arguments as :func:`contact.traction.crook_traction`
-    (flat arrays, reference temperature, no limiting shear); no input checks."""
+    an array (n,) (MODEL.md §6, with ``limiting_shear`` = Λ the smooth cap of §6a; None or
+    0: pure Crook). Arguments as :func:`contact.traction.crook_traction` (flat arrays,
+    reference temperature); no input checks."""
     args = [np.ascontiguousarray(v, dtype=np.float64).ravel() for v in (u_x, u_y, omega_s, a, b, p_max, h)]
     out = np.empty((4, args[0].shape[0]))
     c1_coef = lubricant.temperature_viscosity / (8.0 * lubricant.thermal_conductivity)
     _crook_many(*args, float(lubricant.viscosity), float(lubricant.pressure_viscosity), c1_coef,
-                *crook_tables(order), out)
+                float(limiting_shear or 0.0), *crook_tables(order), out)
     return out
 
 
@@ -361,7 +444,8 @@ def rotation_matrices(nu):
 @njit(cache=True, error_model="numpy")
 def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
+                  lam_s):
     """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
     z = c.shape[1]
     diam = 2.0 * ball_radius
@@ -455,7 +539,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
         h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
             1.0 - 0.61 * math.exp(-0.73 * ell))
         h = max(h, min_film)
-        fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef,
+        fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef, lam_s,
                                    cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64)
         if not spin_moment:
             mz = 0.0
@@ -474,7 +558,8 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
 @njit(cache=True, error_model="numpy")
 def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load):
+                  c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
+                  lam_s=0.0):
     """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
 
     Parameters
@@ -495,6 +580,9 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
     spin_moment : bool
     eta0, c_p, c1_coef, max_barus : float
         η0 (Pa s), c_ηP (1/Pa), c_ηT/(8 K_c), and the bound on c_ηP p_max of the traction.
+    lam_s : float, optional
+        Limiting-shear coefficient Λ of the smooth cap (MODEL.md §6a); 0 (default): pure
+        Crook. Last, so that calls written before it existed keep working.
     force, moment : ndarray (B, 2, Z, 3), out
         On each ball at its contact with race k, N; about the ball centre, N m.
     penetration, load : ndarray (B, 2, Z), out
@@ -503,19 +591,21 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
     for idx in range(c.shape[0] * 2 * c.shape[1]):
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
+                      lam_s)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
 def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                            e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                            c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration,
-                           load):
+                           load, lam_s=0.0):
     """:func:`race_contacts` with the contacts spread over numba's threads."""
     for idx in prange(c.shape[0] * 2 * c.shape[1]):
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
-                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load)
+                      c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
+                      lam_s)
 
 
 @njit(cache=True, error_model="numpy")

@@ -32,6 +32,11 @@ class Lubricant:
         K_c, W/(m K); sets the Crook thermal softening (MODEL.md §6).
     density : float
         kg/m^3; used by the ball drag law (MODEL.md §8).
+    limiting_shear_coefficient : float
+        Lambda = tau_L / p >= 0, the limiting shear stress over the pressure (MODEL.md §6a):
+        the traction law ``ContactLaw(traction='crook-limited')`` bounds the local shear
+        stress smoothly by tau_L = Lambda p. 0: no limit. Default 0.047, Bair & Winer's
+        (1979) value for a mineral oil.
     """
 
     viscosity: float
@@ -40,6 +45,7 @@ class Lubricant:
     temperature_viscosity: float
     thermal_conductivity: float
     density: float
+    limiting_shear_coefficient: float = 0.047
 
     def __post_init__(self) -> None:
         _check_positive("viscosity", self.viscosity)
@@ -49,6 +55,7 @@ class Lubricant:
         _check_positive("temperature_viscosity", self.temperature_viscosity)
         _check_positive("thermal_conductivity", self.thermal_conductivity)
         _check_positive("density", self.density, allow_zero=True)
+        _check_positive("limiting_shear_coefficient", self.limiting_shear_coefficient, allow_zero=True)
 
     def viscosity_at(self, pressure, temperature=None):
         """Barus viscosity eta = eta_0 exp(c_etaP p - c_etaT (T - T_R)), Pa s (P11).
@@ -79,4 +86,10 @@ REFERENCE_LUBRICANT = Lubricant(
     # Lost by the OCR; 0.14 W/(m K) is typical of mineral oil and matters little.
     thermal_conductivity=0.14,
     density=860.0,  # kg/m^3 (paper table 1b)
+    # Not in the paper (its Crook law has no limit; ContactLaw(traction='crook') keeps it).
+    # tau_L / p = 0.047 for a mineral oil, Bair & Winer (1979, "A rheological model for EHD
+    # contacts based on primary laboratory data", ASME J. Lubr. Technol. 101, 258-265), as
+    # quoted in the traction literature; Hoglund gives 0.035-0.053 for ISO VG 100 mineral and
+    # PAO oils (MODEL.md §6a).
+    limiting_shear_coefficient=0.047,
 )

@@ -21,6 +21,7 @@ Example::
     temperature_viscosity = 0.05
     thermal_conductivity = 0.14
     density = 860
+    limiting_shear_coefficient = 0.047   # tau_L / p (MODEL.md §6a); 0: no limit
     [drag]                           # optional; fully flooded sphere drag if absent
     drag_coefficient = 0.5
     oil_volume_fraction = 1.0

@@ -8,6 +8,7 @@ import sys
 
 import numpy as np
 
+from contact.ballrace import TRACTION_MODELS
 from contact.ballrace import ContactLaw as ContactLawDefaults
 from .bearingfile import BearingFile, load_bearing
 from .presets import REFERENCE_BEARING
@@ -58,7 +59,8 @@ def _simulate(args) -> int:
     settings = SolverSettings(solver=args.solver, step=args.step, output_step=max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
-                       contact_law=ContactLaw(quadrature_order=args.order), error_estimate=args.error_estimate)
+                       contact_law=ContactLaw(traction=args.traction, quadrature_order=args.order),
+                       error_estimate=args.error_estimate)
     data = summary.to_dict()
     if args.plot:
         from .plots import plot_run
@@ -105,10 +107,13 @@ def _skid_map(args) -> int:
         client = Client(args.scheduler)
     print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, {args.time:g} s per point -> {args.out}", flush=True)
+    from contact.ballrace import ContactLaw
+
     result = skidmap.skid_map(setup.bearing, setup.lubricant, axial=skidmap.parse_range(args.axial),
                               radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
                               time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
-                              progress=lambda line: print(line, flush=True))
+                              progress=lambda line: print(line, flush=True),
+                              contact_law=ContactLaw(traction=args.traction))
     print(result.markdown())
     print(f"wrote {args.out}/skid_map.csv, skid_map.md, thresholds.json, skid_map.png")
     return 0
@@ -117,10 +122,18 @@ def _skid_map(args) -> int:
 def _render(args) -> int:
     from .graphics import render_run
 
+    from contact.ballrace import ContactLaw
+
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
-                       frames=args.frames, backend=args.backend)
+                       frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction))
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
+
+
+def _traction_option(p) -> None:
+    p.add_argument("--traction", choices=TRACTION_MODELS, default=ContactLawDefaults.traction,
+                   help="ball-race traction law (MODEL.md §6, §6a): crook-limited = Crook with the lubricant's "
+                        "limiting shear stress (default), crook = the paper's pure Crook law")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -151,6 +164,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--step", type=float, default=1e-4, help="time step, s")
     p.add_argument("--output-step", type=float, default=5e-4, help="output period, s")
     p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
+    _traction_option(p)
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
@@ -166,6 +180,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--backend", choices=("auto", "opengl", "raytracer"), default="auto",
                    help="auto: OpenGL with an X display (e.g. xvfb-run), else the raytracer")
     p.add_argument("--out", required=True, help="output directory")
+    _traction_option(p)
     p.set_defaults(func=_render)
 
     from . import skidmap
@@ -180,6 +195,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="out/skid_map", help="output directory (resumes what it finds there)")
     p.add_argument("--workers", type=int, default=None, help="local worker processes (default: CPU count)")
     p.add_argument("--scheduler", help="Dask scheduler address (runs the grid on that cluster)")
+    _traction_option(p)
     p.set_defaults(func=_skid_map)
     return parser
 

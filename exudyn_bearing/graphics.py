@@ -218,10 +218,11 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
 
 
 def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto"):
+               backend="auto", contact_law=None):
     """Simulate the reference bearing (inner race driven at ``rpm``, outer race fixed) for
     ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
-    the run (the CLI's ``render`` command). Returns the written paths."""
+    the run (the CLI's ``render`` command); ``contact_law`` a
+    :class:`contact.ballrace.ContactLaw` (default: the builder's). Returns the written paths."""
     import exudyn as exu
 
     from .builder import CreateAngularContactBearing
@@ -232,8 +233,9 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
         raise ValueError(f"frames must be a positive integer, got {frames!r}")
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
+    kw = {} if contact_law is None else dict(contactLaw=contact_law)
     h = CreateAngularContactBearing(mbs, innerRace=Driven(rpm), outerRace=Fixed(), axialForce=axial,
-                                    radialForce=radial)
+                                    radialForce=radial, **kw)
     AddBearingGraphics(mbs, h)
     mbs.Assemble()
     run_solver(mbs, [h], time, SolverSettings())

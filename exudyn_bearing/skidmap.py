@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
@@ -76,13 +77,13 @@ class SkidPoint:
 
 def _run_point(args) -> dict:
     """Worker: one dynamic run; never raises (errors are reported in the point)."""
-    point, bearing, lubricant, drag = args
+    point, bearing, lubricant, drag, *law = args
     start = _time.perf_counter()
     try:
         from .runner import simulate
 
         s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=point.time,
-                     drag=drag)
+                     drag=drag, contact_law=law[0] if law else ContactLaw())
         res = s.results
         last = res.last(1 / 3)
         peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))
@@ -201,6 +202,41 @@ def _load_done(path: Path) -> dict:
     return done
 
 
+def _inputs_record(bearing, lubricant, drag, contact_law) -> dict:
+    """What a map's points depend on besides (axial, radial, rpm, time): the bearing, the
+    lubricant, the drag, the contact law and the package version."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        package = version("exudyn-bearing")
+    except PackageNotFoundError:
+        package = "unknown"
+    return {"bearing": repr(bearing), "lubricant": repr(lubricant), "drag": repr(drag),
+            "contact_law": repr(contact_law), "version": package}
+
+
+def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law) -> None:
+    """Record the map's inputs in ``folder/inputs.json``; a resume into a folder whose
+    points came from other inputs is refused (it would serve results of another bearing,
+    oil or law)."""
+    record = _inputs_record(bearing, lubricant, drag, contact_law)
+    path = folder / "inputs.json"
+    if path.exists():
+        try:
+            old = json.loads(path.read_text())
+        except json.JSONDecodeError:
+            old = None
+        if old != record:
+            changed = sorted(k for k in record if old is None or old.get(k) != record[k])
+            raise ValueError(f"out: {folder} holds a skid map computed from other inputs ({', '.join(changed)} "
+                             "differ); use another --out folder or delete it")
+    elif (folder / "points.jsonl").exists():
+        raise ValueError(f"out: {folder} holds points with no record of their inputs (an older version); "
+                         "use another --out folder or delete it")
+    else:
+        path.write_text(json.dumps(record, indent=1))
+
+
 def _one_thread_per_worker():
     """Pool initializer: the points already run in parallel processes, so each keeps its
     contact kernels on one thread (more threads than cores slow every process down)."""
@@ -212,7 +248,7 @@ def _one_thread_per_worker():
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
              axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float = DEFAULT_TIME,
              drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
-             progress=print) -> SkidMap:
+             progress=print, contact_law: ContactLaw = ContactLaw()) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) for
     ``time`` s each and return a :class:`SkidMap`.
 
@@ -227,6 +263,11 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         Run on this Dask cluster instead of local processes.
     progress : callable or None
         Called with one line per finished point (runs done, time left).
+    contact_law : contact.ballrace.ContactLaw
+        Ball–race physics of every point (default: Crook with the limiting shear, MODEL.md
+        §6a). A resumed map reuses the points in ``out`` only if they came from the same
+        bearing, lubricant, drag, law and package version (``out/inputs.json``); otherwise
+        a ValueError.
     """
     grid = [SkidPoint(float(a), float(r), float(n), float(time)) for n, r, a in itertools.product(rpm, radial, axial)]
     if not grid:
@@ -235,13 +276,14 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     done = {}
     if journal is not None:
         journal.parent.mkdir(parents=True, exist_ok=True)
+        _check_inputs(journal.parent, bearing, lubricant, drag, contact_law)
         done = _load_done(journal)
     todo = [p for p in grid if p.key not in done]
     result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done])
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()
-    jobs = [(p, bearing, lubricant, drag) for p in todo]
+    jobs = [(p, bearing, lubricant, drag, contact_law) for p in todo]
 
     def record(data):
         point = SkidPoint(**data)

@@ -172,7 +172,7 @@ def _traction_reference(kin, forces, law, cap):
 
 @pytest.mark.parametrize("exponent", [60.0, 40.0])
 def test_barus_cap_numpy_path(exponent):
-    law = ContactLaw(max_barus_exponent=exponent)
+    law = ContactLaw(traction="crook", max_barus_exponent=exponent)  # the cap alone, no limiting shear
     assert ContactLaw().max_barus_exponent == 60.0
     cap = exponent / LUB.pressure_viscosity
     c, v, w = _inner_contacts(APPROACHES)
@@ -199,7 +199,7 @@ def test_barus_cap_compiled_kernel(exponent):
     fast rule's float32 agreement with the numpy rule (3e-4 of the force scale), far from
     the uncapped value."""
     compiled = pytest.importorskip("contact.compiled")
-    law = ContactLaw(max_barus_exponent=exponent)
+    law = ContactLaw(traction="crook", max_barus_exponent=exponent)
     cap = exponent / LUB.pressure_viscosity
     c, v, w = _inner_contacts(APPROACHES)
     kin = ball_race_kinematics(c, v, w, np.zeros(3), np.eye(3), np.zeros(3), W_RACE, (R_I, Z_I, TUBE_I),

@@ -233,8 +233,8 @@ def test_serial_kernel_from_a_thread_equals_parallel():
     np.testing.assert_allclose(box["f"], main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
 
 
-@pytest.mark.parametrize("law", [ContactLaw(traction="coulomb"), ContactLaw(limiting_shear=0.07),
-                                 ContactLaw(fast_quadrature=False), ContactLaw(compiled=False)])
+@pytest.mark.parametrize("law", [ContactLaw(traction="coulomb"), ContactLaw(fast_quadrature=False),
+                                 ContactLaw(compiled=False)])
 def test_laws_the_kernel_does_not_cover_use_numpy(law):
     _sc, con, _q, _qt = _scene(law=law, axialForce=1300.0)
     assert con._compiled is None

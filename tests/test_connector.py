@@ -201,8 +201,12 @@ def hand_contacts(c, v, w, race_pos, race_rot, race_vel, race_omega, race, law):
             h = r_x * 2.69 * uu ** 0.67 * gg ** 0.53 * ww ** -0.067 * (1 - 0.61 * math.exp(-0.73 * k))
             h = max(h, law.min_film_thickness)
             # same quadrature as the connector: this checks the assembly, not the rule
+            # limiting shear (MODEL.md §6a): the law's own Λ, else the oil's for 'crook-limited'
+            lam = law.limiting_shear
+            if lam is None and law.traction == "crook-limited":
+                lam = LUB.limiting_shear_coefficient
             tr = crook_traction(u_x, u_y, spin, a, b, p_max, h, LUB, order=law.quadrature_order,
-                                limiting_shear=law.limiting_shear, fast=law.fast_quadrature)
+                                limiting_shear=lam, fast=law.fast_quadrature)
             fx, fy = float(tr.fx), float(tr.fy)
             mz = float(tr.mz) if law.spin_moment else 0.0
         out["force"].append(-load * n + fx * t1 + fy * t2)

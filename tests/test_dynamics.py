@@ -201,8 +201,11 @@ def test_traction_pulls_sliding_balls_towards_rolling():
     spin speed approaches the unperturbed one. Generalized-alpha, step 5e-5 s, 3 ms.
     Observed: slip 0.51 m/s -> <0.015 m/s. Wall ≈ 3–6 s."""
     _, mbs = _new_system()
+    # the paper's law: the sign convention is what is tested, and its unbounded traction
+    # brings the balls back within the 3 ms (the capped default needs longer)
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
-                                         axialForce=1300.0, ballDrag=None, show=False)
+                                         axialForce=1300.0, ballDrag=None, contactLaw=ContactLaw(traction="crook"),
+                                         show=False)
     perturbed = {0: 1.08, 8: 0.92}
     reference = [4, 12]  # unperturbed balls (pure axial load: all balls are equivalent)
     for ball, factor in perturbed.items():
@@ -244,6 +247,10 @@ def test_kinematic_cage_slip_zero_without_drag(axial):
     while the slip decays 0.12 % -> 0.055 %), so this start is near the steady state a
     short run can represent.
 
+    The paper's law (pure Crook): with the default limiting shear (Lambda = 0.047 < the
+    criterion's 0.06) 1300 N no longer satisfies Jones' criterion and settles at ~0.2 %;
+    tests/test_results_guard.py checks the default law without drag at 3 kN.
+
     Not included: light loads. The balls' axes pivot towards the bearing axis in the first
     tens of ms and the kinematic slip grows (200 N: ≈ 10 % after 20 ms; 400 N: ≈ 6 %;
     700 N: ≈ 2.6 %; 1000 N: ≈ 0.5 %, all without drag, same with RK44 at 1e-5 s) and
@@ -252,7 +259,7 @@ def test_kinematic_cage_slip_zero_without_drag(axial):
     _, mbs = _new_system()
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
                                          axialForce=axial, ballDrag=None, initialControl="outer",
-                                         contactLaw=ContactLaw(quadrature_order=8), show=False)
+                                         contactLaw=ContactLaw(traction="crook", quadrature_order=8), show=False)
     mbs.Assemble()
     run_solver(mbs, [handle], 0.012, SolverSettings(solver="generalized-alpha", step=1e-4, output_step=5e-4))
     res = handle.Results(mbs)

@@ -39,6 +39,9 @@ PAPER_OIL = Lubricant(viscosity=0.04, reference_temperature=30.0, pressure_visco
                       temperature_viscosity=0.05, thermal_conductivity=0.14, density=860.0)
 #: MODEL.md §8: sphere drag, C_D = 0.5, fully flooded (rho_eff = 860 kg/m³).
 DRAG_COEFFICIENT, OIL_DENSITY = 0.5, 860.0
+#: MODEL.md §6a: the default law caps Crook's stress smoothly at Lambda p, Lambda = 0.047 for a
+#: paraffinic mineral oil (Höglund 1999; Bair & Winer).
+LIMITING_SHEAR = 0.047
 
 
 def run(axial, time, **kw):
@@ -73,7 +76,8 @@ def balance():
     def get(axial, lubricant=PAPER_OIL, drag_coefficient=DRAG_COEFFICIENT):
         key = (axial, lubricant, drag_coefficient)
         if key not in cache:
-            cache[key] = solve_balance(REFERENCE_BEARING, lubricant, axial, RPM, drag_coefficient, OIL_DENSITY)
+            cache[key] = solve_balance(REFERENCE_BEARING, lubricant, axial, RPM, drag_coefficient, OIL_DENSITY,
+                                       LIMITING_SHEAR)
         return cache[key]
 
     return get
@@ -89,7 +93,7 @@ def check_against_balance(summary, bal, slip_rel):
 
 
 def test_light_load_gross_sliding_matches_the_steady_balance(balance):
-    """400 N with drag: the balls slide grossly (kinematic cage slip ~70 %). From the
+    """400 N with drag: the balls slide grossly (kinematic cage slip ~71 %). From the
     pure-rolling start the cage speed drifts by less than 0.1 % per 0.33 s only after ~1.7 s; it must come out ``settled`` and agree with
     the steady balance within 2 % relative (the balance neglects nothing the model has; the
     remaining transient at 2 s is ~0.03 % of the slip, the step error ~1e-3 pp)."""
@@ -105,35 +109,36 @@ def test_light_load_gross_sliding_matches_the_steady_balance(balance):
 
 
 def test_slip_near_the_threshold_matches_the_steady_balance(balance):
-    """1.3 kN with drag: kinematic cage slip ~2 %, near the 1 % threshold, where the ball
-    attitude is set by the balance of drag, traction, spin and gyroscopic moments. Within
-    2 % relative of the balance after 0.6 s (remaining transient ~0.6 % of the slip)."""
-    summary = run(1300.0, 0.6)
-    bal = balance(1300.0)
-    assert 1.0 < bal.kinematic_cage_slip_percent < 5.0
-    check_against_balance(summary, bal, 0.02)
+    """2 kN with drag: kinematic cage slip ~1 %, at the threshold, where the ball attitude is
+    set by the balance of drag, traction, spin and gyroscopic moments. Within 3 % relative of
+    the balance after 0.6 s (the dynamic model integrates the capped law with the fast rule,
+    ~0.7 % of the traction scale, the balance with the accurate rule)."""
+    summary = run(2000.0, 0.6)
+    bal = balance(2000.0)
+    assert 0.5 < bal.kinematic_cage_slip_percent < 2.0
+    check_against_balance(summary, bal, 0.03)
     film = summary.results.inner["film"][summary.results.last()]
     assert float(np.mean(film)) == pytest.approx(bal.film_inner, rel=0.01)
 
 
 @pytest.mark.parametrize("change", ["reference", "c_etaP 1.5e-8"])
 def test_threshold_moves_the_right_way(balance, change):
-    """The 1 % threshold of the reference bearing at 1800 rpm lies below 1.6 kN; lowering the
-    pressure-viscosity coefficient (less traction) moves it above 1.6 kN. The slip at 1.6 kN
-    (0.5 s from the pure-rolling start, transient below 1 % of the slip) agrees with the
-    balance for the same inputs within 5 %, and sits on the stated side of 1 %.
+    """The 1 % threshold of the reference bearing at 1800 rpm lies below 2.2 kN; lowering the
+    pressure-viscosity coefficient (less traction) moves it above 2.2 kN. The slip at 2.2 kN
+    (0.5 s from the pure-rolling start) agrees with the balance for the same inputs within
+    5 %, and sits on the stated side of 1 %.
 
-    (Doubling the drag instead is the other lever; at 1.6 kN that run leaves the
-    axisymmetric state — balls loaded up to 410 N, 65 000 steps for 1 s — so it is not a
-    clean comparison; the drag itself is guarded by the two tests above.)"""
+    (Doubling the drag instead is the other lever; with the paper's law at 1.6 kN that run
+    left the axisymmetric state — balls loaded up to 410 N, 65 000 steps for 1 s — so it is
+    not used here; the drag itself is guarded by the tests above.)"""
     lubricant, kw = PAPER_OIL, {}
     if change != "reference":
         lubricant = dataclasses.replace(PAPER_OIL, pressure_viscosity=1.5e-8)
         kw["lubricant"] = lubricant
-    summary = run(1600.0, 0.5, **kw)
-    bal = balance(1600.0, lubricant)
+    summary = run(2200.0, 0.5, **kw)
+    bal = balance(2200.0, lubricant)
     assert summary.kinematic_cage_slip_percent == pytest.approx(bal.kinematic_cage_slip_percent, rel=0.05)
     if change == "reference":
         assert summary.kinematic_cage_slip_percent < 1.0
     else:
-        assert summary.kinematic_cage_slip_percent > 1.5
+        assert summary.kinematic_cage_slip_percent > 1.1

@@ -80,9 +80,10 @@ def test_hss_shaft_scene_matches_the_quasi_static_shaft():
     """demos/hss_shaft.py: shaft (rigid body, speed held by a velocity constraint) on two
     reference bearings attached with races.OnBody, gear load ramped in over 5 ms, 25 ms
     simulated (generalized-alpha, 1e-4 s). Over the last quarter both bearings' reactions
-    match the 5-DOF quasi-static solution within 2 % and each inner-race centre's
-    displacement within 8 %. Observed: reactions within 1.3 % / 1.6 % (axial reactions
-    38 N higher). The quasi-static shaft has no cage: under the combined load the pocket
+    match the 5-DOF quasi-static solution within 3 % and each inner-race centre's
+    displacement within 8 %. Observed: reactions within 1.3 % / 1.6 % with the paper's
+    law (axial reactions 38 N higher), 2.1 % with the default limited traction, whose
+    skidding balls press the cages harder onto their lands. The quasi-static shaft has no cage: under the combined load the pocket
     forces press each land-guided cage onto its outer-race land (~40 N at the end, up to
     274 N while the load ramps in); with the old pocket-only cage the reactions matched
     within 0.1 % but one cage drifted 1.9 mm off centre in these 25 ms."""
@@ -101,7 +102,7 @@ def test_hss_shaft_scene_matches_the_quasi_static_shaft():
     dyn, qs = out["dynamic"], out["quasi_static"]
     for k in range(2):
         r_qs = np.asarray(qs["reactions_N"][k])
-        assert np.linalg.norm(dyn["reactions_N"][k] - r_qs) < 0.02 * np.linalg.norm(r_qs), (k, dyn, qs)
+        assert np.linalg.norm(dyn["reactions_N"][k] - r_qs) < 0.03 * np.linalg.norm(r_qs), (k, dyn, qs)
         s_qs = np.asarray(qs["race_shift_um"][k])
         assert np.linalg.norm(dyn["race_shift_um"][k] - s_qs) < 0.08 * np.linalg.norm(s_qs), (k, dyn, qs)
     # the gear's radial force pushes the shaft away from the mesh (-y), the tangential one along -x

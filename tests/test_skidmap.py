@@ -88,3 +88,29 @@ def test_dask_local_cluster_gives_identical_results(tmp_path):
         assert a.key == b.key
         assert a.kinematic_cage_slip_percent == b.kinematic_cage_slip_percent
         assert a.cage_slip_percent == b.cage_slip_percent
+
+
+def test_resume_refuses_results_of_other_inputs(tmp_path):
+    """A map folder remembers its bearing, lubricant, drag, law and version; resuming with
+    another bearing or law is refused instead of serving the old points."""
+    import dataclasses
+
+    from contact.ballrace import ContactLaw
+    from exudyn_bearing import REFERENCE_BEARING
+    from exudyn_bearing.skidmap import _check_inputs
+
+    from exudyn_bearing.presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
+
+    args = (REFERENCE_BEARING, REFERENCE_LUBRICANT, REFERENCE_DRAG, ContactLaw())
+    _check_inputs(tmp_path, *args)
+    _check_inputs(tmp_path, *args)  # same inputs: fine
+    other = dataclasses.replace(REFERENCE_BEARING, balls=15)
+    with pytest.raises(ValueError, match="out: .*bearing"):
+        _check_inputs(tmp_path, other, *args[1:])
+    with pytest.raises(ValueError, match="out: .*contact_law"):
+        _check_inputs(tmp_path, *args[:3], ContactLaw(traction="crook"))
+    old = tmp_path / "old"
+    old.mkdir()
+    (old / "points.jsonl").write_text("")
+    with pytest.raises(ValueError, match="out: .*no record"):
+        _check_inputs(old, *args)

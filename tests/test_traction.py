@@ -403,7 +403,10 @@ def test_limiting_shear_caps_traction():
     assert np.all(np.hypot(t.fx, t.fy) <= np.hypot(free.fx, free.fy) * (1 + 1e-12))
     assert np.all(t.heat > 0)
     big = crook_traction(u, 0.0, 50.0, **HEAVY, h=H, lubricant=REF, limiting_shear=1e6)
-    np.testing.assert_allclose(_forces(big), _forces(free), rtol=1e-13)
+    # a cap a million times the pressure leaves Crook's law (tanh(x)/x = 1 - x²/3: ~1e-20 here, the blend itself rounds at ~1e-11);
+    # compared on the force scale, since the transverse force is round-off (~1e-14 N)
+    ref = _forces(free)
+    np.testing.assert_allclose(_forces(big), ref, rtol=1e-10, atol=1e-12 * np.abs(ref).max())
 
 
 @pytest.mark.parametrize("name, kwargs", [
