@@ -117,7 +117,7 @@ def matrix(sim_time, names, law=None):
         start = time.perf_counter()
         try:
             run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
-        except (BearingSimulationError, ValueError) as err:
+        except Exception as err:  # noqa: BLE001 - a failing case is a row of the table
             rows.append(f"| {name} | {text} | fails after {time.perf_counter() - start:.1f} s: "
                         f"{str(err)[:160]} | | | | | |")
             continue
