@@ -20,6 +20,8 @@ from contact.lubricant import REFERENCE_LUBRICANT as REF
 from contact.lubricant import Lubricant
 from contact.traction import crook_traction
 from contact.traction_law import limit_shear, thermal_factor
+from tests.test_compiled import _contacts  # reference-bearing contact states
+from tests.test_traction import _scipy_reference
 
 LAM = 0.047  # the reference oil's Λ (MODEL.md §6a)
 # heavily loaded contacts of the reference bearing (MODEL.md §9): (a transverse, b rolling, p_max, h)
@@ -45,29 +47,7 @@ def _moment_bound(lam, a, b, p_max):
 def _capped_reference(ux, uy, w, a, b, p_max, h, lam, lub=REF, eps=1e-6):
     """∬ (τ_x, τ_y, x τ_y − y τ_x, τ·u) dA of the capped Crook stress by nested adaptive scipy
     quadrature, both levels split at the spin-pole lines (MODEL.md §6, §6a, §8)."""
-    c1c = lub.temperature_viscosity / (8.0 * lub.thermal_conductivity)
-    xp, yp = (-uy / w, ux / w) if w != 0 else (math.inf, math.inf)
-
-    def inner(x):
-        ym = a * math.sqrt(max(1.0 - (x / b) ** 2, 0.0))
-
-        def f(y):
-            p = p_max * math.sqrt(max(1.0 - (x / b) ** 2 - (y / a) ** 2, 0.0))
-            eta = lub.viscosity * math.exp(lub.pressure_viscosity * p)
-            vx, vy = ux - w * y, uy + w * x
-            v = math.hypot(vx, vy)
-            s = math.sqrt(eta * c1c) * v
-            g = eta / h * (math.asinh(s) / (s * math.sqrt(1.0 + s * s)) if s > 0 else 1.0)  # Crook: τ = g u
-            t_c, t_l = g * v, lam * p
-            if t_c > 0:  # |τ| = τ_L tanh(|τ_C|/τ_L) (0 where p = 0)
-                g *= t_l * math.tanh(t_c / t_l) / t_c if t_l > 0 else 0.0
-            return np.array([g * vx, g * vy, g * (x * vy - y * vx), g * v * v])
-
-        pts = [yp] if -ym < yp < ym else None
-        return integrate.quad_vec(f, -ym, ym, epsrel=eps, epsabs=0, points=pts, limit=400)[0]
-
-    pts = [xp] if -b < xp < b else None
-    return integrate.quad_vec(inner, -b, b, epsrel=eps, epsabs=0, points=pts, limit=400)[0]
+    return _scipy_reference(ux, uy, w, a, b, p_max, h, lub=lub, eps=eps, lam=lam, limit=400)
 
 
 def _rel_error(t, ref, a, b):
@@ -263,20 +243,6 @@ def test_jacobian_with_the_cap_matches_finite_differences():
 # ---------------------------------------------------------------------------------------
 # (e) compiled = numpy with the cap
 # ---------------------------------------------------------------------------------------
-def _contacts(n, seed):
-    """Reference-bearing contact states as tests/test_compiled.py builds them."""
-    rng = np.random.default_rng(seed)
-    a = rng.uniform(0.8e-3, 1.8e-3, n)
-    b = rng.uniform(0.15e-3, 0.35e-3, n)
-    om = rng.normal(0.0, 200.0, n)
-    om[: n // 10] = 0.0
-    ux = rng.normal(0.0, 0.3, n) * rng.choice([0.01, 0.1, 1.0], n)
-    uy = rng.normal(0.0, 0.1, n) * rng.choice([0.01, 0.1, 1.0], n)
-    pm = rng.uniform(0.3e9, 1.4e9, n)
-    h = rng.uniform(5e-8, 5e-7, n)
-    return ux, uy, om, a, b, pm, h
-
-
 def test_compiled_kernel_is_the_numpy_fast_rule_with_the_cap():
     compiled = pytest.importorskip("contact.compiled")
     ux, uy, om, a, b, pm, h = _contacts(200, seed=4)
