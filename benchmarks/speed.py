@@ -106,8 +106,6 @@ def matrix(sim_time, names, law=None):
     from exudyn_bearing import simulate
     from exudyn_bearing.errors import BearingSimulationError
 
-    settings = SolverSettings()
-    nominal = int(round(sim_time / settings.step))
     rows, wall_a = [], None
     for name in names:
         text, factory, axial, radial, rpm = MATRIX[name]
@@ -122,12 +120,13 @@ def matrix(sim_time, names, law=None):
                         f"{str(err)[:160]} | | | | | |")
             continue
         wall = run.wall_time_s
+        nominal = int(round(sim_time / run.solver["step"]))
         wall_a = wall if name == "a" else wall_a
         est = run.error_estimate["kinematic_cage_slip_percent"]
         revs = run.cage_speed * sim_time / (2 * np.pi)
         ratio = f"{wall / wall_a:.2f}" if wall_a else "-"
         rows.append(f"| {name} | {text} | {wall / sim_time * 0.1:.2f} s ({wall / max(revs, 1e-12):.2f} s per cage rev) "
-                    f"| {run.steps} / {nominal} | {run.newton_iterations} | {run.jacobian_updates} | "
+                    f"| {run.steps} / {nominal} ({run.solver['step']:.3g} s) | {run.newton_iterations} | {run.jacobian_updates} | "
                     f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {ratio} |")
     print(f"| case | scene | wall per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage slip "
           f"± half-step estimate | wall / (a) |")

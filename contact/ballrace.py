@@ -61,7 +61,8 @@ class ContactLaw:
     traction : {'crook-limited', 'crook', 'newtonian', 'coulomb', 'none'}
         'crook-limited' (default): Crook thermal EHD traction with the smooth limiting shear
         stress |tau| = tau_L tanh(|tau_Crook| / tau_L), tau_L = Lambda p (MODEL.md §6a), Lambda
-        the lubricant's ``limiting_shear_coefficient`` (0.047 for the reference oil);
+        the lubricant's ``limiting_shear_coefficient`` (0.047 for the reference oil), and the
+        film's elastic shear compliance in series (``film_elasticity``, MODEL.md §6b);
         'crook': the paper's pure Crook law (MODEL.md §6); its isothermal Newtonian limit
         (:func:`contact.traction.newtonian_traction`, small slip only); regularized dry
         Coulomb friction (:func:`contact.friction.coulomb_traction`); or normal forces only.
@@ -87,6 +88,12 @@ class ContactLaw:
         overriding the lubricant's ``limiting_shear_coefficient`` for 'crook-limited' and
         applied to 'crook' too; None: the lubricant's value ('crook-limited') or no cap
         ('crook'). See :meth:`limiting_shear_for`.
+    film_elasticity : bool or None
+        Put the film's elastic shear compliance in series with the Crook law (MODEL.md §6b,
+        Johnson & Tevaarwerk's Maxwell film, shear modulus G = kappa p with kappa the
+        lubricant's ``film_shear_modulus_coefficient``): bounds the traction's initial slope
+        by the film's stiffness instead of the Newtonian film's near-infinite one. None
+        (default): on for 'crook-limited', off for 'crook' (the paper's law).
     hertz_method : {'fit', 'exact'}
     friction_coefficient, friction_regularization : float
         μ and the slip speed u_r (m/s) that smooths stick–slip, for ``traction='coulomb'``.
@@ -113,6 +120,7 @@ class ContactLaw:
     damping_ratio: float = 0.05
     min_film_thickness: float = 1e-8
     limiting_shear: float | None = None
+    film_elasticity: bool | None = None
     hertz_method: str = "fit"
     max_barus_exponent: float = 60.0
     compiled: bool = True
@@ -135,6 +143,8 @@ class ContactLaw:
             raise ValueError(f"max_barus_exponent must lie in (0, 80], got {self.max_barus_exponent!r}")
         if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
             raise ValueError(f"limiting_shear must be positive or None, got {self.limiting_shear!r}")
+        if self.film_elasticity not in (None, True, False):
+            raise ValueError(f"film_elasticity must be True, False or None, got {self.film_elasticity!r}")
 
     def limiting_shear_for(self, lubricant) -> float | None:
         """Lambda of the smooth limiting shear this law applies with ``lubricant``
@@ -148,6 +158,15 @@ class ContactLaw:
             lam = float(getattr(lubricant, "limiting_shear_coefficient", 0.0))
             return lam if lam > 0.0 else None
         return None
+
+    def film_modulus_for(self, lubricant) -> float | None:
+        """kappa = G/p of the film's elastic compliance this law applies with ``lubricant``
+        (MODEL.md §6b), or None for none: with ``film_elasticity`` True, or None and
+        'crook-limited', the lubricant's ``film_shear_modulus_coefficient``."""
+        if self.traction not in CROOK_MODELS:
+            return None
+        on = self.traction == "crook-limited" if self.film_elasticity is None else self.film_elasticity
+        return float(lubricant.film_shear_modulus_coefficient) if on else None
 
 
 @dataclass(frozen=True)
@@ -218,7 +237,9 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         else:
             tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
                                 h[idx], lubricant, order=law.quadrature_order,
-                                limiting_shear=law.limiting_shear_for(lubricant), fast=law.fast_quadrature)
+                                limiting_shear=law.limiting_shear_for(lubricant), fast=law.fast_quadrature,
+                                film_modulus=law.film_modulus_for(lubricant),
+                                entrainment=kin.entrainment[idx])
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz

@@ -232,11 +232,74 @@ def _rays32_capped(ir, lam, a0, tlc, rho_tab, w_tab, ray, k):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
-def _ray_sums(rmax, r2, cq, br, a0, lam, tlc, ir, rho_tab, w_tab, scratch):
+def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
+    """g of one node with the film's elastic compliance in series (MODEL.md §6b) and, for
+    ``tlc32`` > 0, the smooth limiting shear (float32; see :func:`_rays32_elastic`)."""
+    p0, p1, p2, p3 = _CP32
+    q0, q1, q2, q3 = _CQ32
+    xo, yo, sgn, omb, uoy, er0, icth = el[0], el[1], el[2], el[3], el[4], el[5], el[6]
+    rho = rm * pr
+    sg = math.sqrt((rm - rho) * (rho + r2))  # σ = p/p_max
+    eh = _exp32(lamh32 * sg)  # √(η/η_T)
+    av = (rho * cq + br) * rho + a032  # c_th |v|²
+    psi = av * (eh * eh)
+    sq = math.sqrt(psi)
+    rt = math.sqrt(_F1 + psi)
+    z = sq + psi / (_F1 + rt)
+    u1 = _F1 + z
+    tc = _log32(u1) * z * eh / ((u1 - _F1) * rt)  # τ_C' = asinh(s) e^{λσ/2}/√(1 + ψ)
+    # strain since the inlet: Ξ = ξ/b, w = v − (0, ω ξ/2) (contact.film_elasticity)
+    yy = yo + rho * sd
+    xi = xo + rho * cd + sgn * math.sqrt(max(_F1 - yy * yy, _F(0.0)))
+    oxi = omb * xi
+    w2 = av * icth + oxi * (_F(0.25) * oxi - uoy - omb * cd * rho)
+    d = sg * abs(xi) * math.sqrt(max(w2, _F(0.0))) + _F(1e-30)  # R = τ_C' er0/d (no 0/0 at ū → 0)
+    f = d / (d + tc * er0)  # 1/(1 + R), R = τ_v/|τ_e|
+    if tlc32 > _F(0.0):
+        x = tc * f * itlc32 / sg
+        xc = min(x, _CAP_X32)
+        y = xc * xc
+        num = ((p3 * y + p2) * y + p1) * y + p0
+        den = ((q3 * y + q2) * y + q1) * y + q0
+        return (tlc32 * sg * eh) * xc * num / (sq * den)
+    return tc * f * eh / sq
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS)
+def _rays32_elastic(ir, lam, a0, tlc, rho_tab, w_tab, ray, el64, k):
+    """:func:`_rays32` with the film's elastic compliance in series (MODEL.md §6b): g/(1 + R),
+    R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|), Ξ = ξ/b the distance from the inlet edge and w the
+    strain rate averaged since the inlet; then the smooth limiting shear for ``tlc`` > 0.
+    ``ray`` rows 4, 5: the ray's direction (c, s) in normalized coordinates; ``el64``: Xo,
+    Yo (ray origin, normalized), sign ū, ω b, v_y at the origin, er0 = η_T |ū|/(√c_th κ p_max b)
+    and 1/c_th."""
+    rm, r2, cq, br, cd, sd = ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]
+    k0, k1, k2 = k[0], k[1], k[2]
+    lamh32, a032 = _F(0.5 * lam), _F(a0)
+    tlc32 = _F(tlc)
+    itlc32 = _F(1.0 / tlc) if tlc > 0.0 else _F(0.0)
+    el = np.empty(7, np.float32)
+    for i in range(7):
+        el[i] = el64[i]
+    k[:] = 0.0
+    for r in range(rho_tab.shape[0]):
+        pr = rho_tab[r, ir]
+        wr = w_tab[r, ir]
+        for d in range(rm.shape[0]):
+            g = wr * _elastic_node(rm[d], r2[d], cq[d], br[d], cd[d], sd[d], pr, lamh32, a032, itlc32, tlc32, el)
+            k0[d] += g
+            g *= pr
+            k1[d] += g
+            k2[d] += g * pr
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _ray_sums(rmax, r2, cq, br, a0, lam, tlc, ir, rho_tab, w_tab, scratch, cd, sd, el):
     """Sums along one ray of g W ρ^j, j = 0, 1, 2, as :func:`_rays32` (``tlc`` > 0: with
-    the limiting shear of :func:`_rays32_capped`) for one ray in the tables' precision:
-    float64 for the rare ray whose ψ overflows float32. ``scratch`` (dtype of the tables)
-    casts the ray constants."""
+    the limiting shear of :func:`_rays32_capped`; ``el[5]`` > 0: with the film's elastic
+    compliance of :func:`_rays32_elastic`, ray direction (``cd``, ``sd``)) for one ray in the
+    tables' precision: float64 for the rare ray whose ψ overflows float32. ``scratch`` (dtype
+    of the tables) casts the ray constants."""
     scratch[0] = rmax
     scratch[1] = r2
     scratch[2] = cq
@@ -261,6 +324,14 @@ def _ray_sums(rmax, r2, cq, br, a0, lam, tlc, ir, rho_tab, w_tab, scratch):
         z = sq + psi / (one + rt)
         u1 = one + z
         g = math.log(u1) * (z / (u1 - one)) / (sq * rt) * e
+        if el[5] > 0.0:  # elastic film in series (MODEL.md §6b)
+            tc = g * math.sqrt(psi / e)  # τ_C'
+            yy = el[1] + rho * sd
+            xi = el[0] + rho * cd + el[2] * math.sqrt(max(1.0 - yy * yy, 0.0))
+            oxi = el[3] * xi
+            w2 = (psi / e) * el[6] + oxi * (0.25 * oxi - el[4] - el[3] * cd * rho)
+            dd = sg * abs(xi) * math.sqrt(max(w2, 0.0)) + 1e-30
+            g *= dd / (dd + tc * el[5])
         if tlc > 0.0:  # smooth limiting shear (MODEL.md §6a)
             x = g * math.sqrt(psi / e) / (tlc * sg)
             if x > 0.0:
@@ -275,10 +346,12 @@ def _ray_sums(rmax, r2, cq, br, a0, lam, tlc, ir, rho_tab, w_tab, scratch):
 
 @njit(cache=True, error_model="numpy")
 def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
-               w64):
+               w64, kap_e=0.0, ent=0.0):
     """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
     :func:`contact.traction_fast._fast_crook`, whose steps this follows one contact at a time),
-    with the smooth limiting shear Λ = ``lam_s`` (MODEL.md §6a; 0: none)."""
+    with the smooth limiting shear Λ = ``lam_s`` (MODEL.md §6a; 0: none) and the film's
+    elastic compliance G = ``kap_e`` p at the signed entrainment speed ``ent`` (m/s;
+    MODEL.md §6b; ``kap_e`` 0 or ``ent`` 0: none)."""
     lo = min(a, b)
     if not lo > 0.0:
         return 0.0, 0.0, 0.0, 0.0
@@ -341,8 +414,9 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, si
     # rays: float64 geometry, float32 constants padded to a multiple of 8 lanes (AVX2)
     n_rays = cos_tab.shape[0]
     c0, s0 = math.cos(th0), math.sin(th0)
-    geo = np.empty((6, n_rays))
-    ray = np.zeros((4, (n_rays + 7) // 8 * 8), np.float32)
+    elastic = kap_e > 0.0 and ent != 0.0
+    geo = np.empty((8, n_rays))
+    ray = np.zeros((6 if elastic else 4, (n_rays + 7) // 8 * 8), np.float32)
     for d in range(n_rays):
         c = cos_tab[d, ie] * c0 - sin_tab[d, ie] * s0  # direction th0 + psi
         s = sin_tab[d, ie] * c0 + cos_tab[d, ie] * s0
@@ -357,9 +431,22 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, si
         geo[3, d] = ray[3, d] = bc * (wc * uOy) - as_ * (wc * uOx)
         geo[4, d] = bc
         geo[5, d] = as_
+        geo[6, d] = c
+        geo[7, d] = s
+        if elastic:
+            ray[4, d] = c
+            ray[5, d] = s
     k = np.empty((3, ray.shape[1]), np.float32)
     tlc = lam_s * pm * hh * math.sqrt(cth) / eta_t  # τ_L' = tlc σ in the rule's units
-    if tlc > 0.0:
+    el = np.zeros(7)
+    if elastic:
+        el[0], el[1] = Xo, Yo
+        el[2] = 1.0 if ent > 0.0 else -1.0
+        el[3], el[4] = om * b, uOy
+        el[5] = eta_t * abs(ent) / (math.sqrt(cth) * kap_e * pm * b)
+        el[6] = 1.0 / cth
+        _rays32_elastic(ir, lam, a0, tlc, rho32, w32, ray, el, k)
+    elif tlc > 0.0:
         _rays32_capped(ir, lam, a0, tlc, rho32, w32, ray, k)
     else:
         _rays32(ir, lam, a0, rho32, w32, ray, k)
@@ -373,7 +460,8 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, si
         rmax, bc, as_ = geo[0, d], geo[4, d], geo[5, d]
         k0, k1, k2 = float(k[0, d]), float(k[1, d]), float(k[2, d])
         if not (abs(k0) < np.inf and abs(k1) < np.inf and abs(k2) < np.inf):
-            k0, k1, k2 = _ray_sums(rmax, geo[1, d], geo[2, d], geo[3, d], a0, lam, tlc, ir, rho64, w64, s64)
+            k0, k1, k2 = _ray_sums(rmax, geo[1, d], geo[2, d], geo[3, d], a0, lam, tlc, ir, rho64, w64, s64,
+                                   geo[6, d], geo[7, d], el)
         w0 = wpsi_tab[d, ie] * rmax * rmax * scale
         S0 += k0 * w0
         w0 *= rmax
@@ -392,23 +480,27 @@ def _crook_one(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, si
 
 @njit(cache=True, error_model="numpy")
 def _crook_many(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
-                w64, out):
+                w64, out, kap_e, ent):
     for i in range(ux.shape[0]):
         out[0, i], out[1, i], out[2, i], out[3, i] = _crook_one(
             ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t, c_p, c1_coef, lam_s, cos_tab, sin_tab, wpsi_tab,
-            rho32, w32, rho64, w64)
+            rho32, w32, rho64, w64, kap_e, ent[i])
 
 
-def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16, limiting_shear=None):
+def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16, limiting_shear=None, film_modulus=None,
+               entrainment=0.0):
     """Crook traction (f_x, f_y, M_z, heat) of n contacts by the compiled fast rule, each
     an array (n,) (MODEL.md §6, with ``limiting_shear`` = Λ the smooth cap of §6a; None or
-    0: pure Crook). Arguments as :func:`contact.traction.crook_traction` (flat arrays,
-    reference temperature); no input checks."""
+    0: pure Crook; ``film_modulus`` = κ and the signed ``entrainment`` speed (m/s) the film's
+    elastic compliance of §6b). Arguments as :func:`contact.traction.crook_traction` (flat
+    arrays, reference temperature); no input checks."""
     args = [np.ascontiguousarray(v, dtype=np.float64).ravel() for v in (u_x, u_y, omega_s, a, b, p_max, h)]
-    out = np.empty((4, args[0].shape[0]))
+    n = args[0].shape[0]
+    out = np.empty((4, n))
+    ent = np.ascontiguousarray(np.broadcast_to(np.asarray(entrainment, dtype=np.float64), (n,)))
     c1_coef = lubricant.temperature_viscosity / (8.0 * lubricant.thermal_conductivity)
     _crook_many(*args, float(lubricant.viscosity), float(lubricant.pressure_viscosity), c1_coef,
-                float(limiting_shear or 0.0), *crook_tables(order), out)
+                float(limiting_shear or 0.0), *crook_tables(order), out, float(film_modulus or 0.0), ent)
     return out
 
 
@@ -445,7 +537,7 @@ def rotation_matrices(nu):
 def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                   c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                  lam_s):
+                  lam_s, kap_e):
     """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
     z = c.shape[1]
     diam = 2.0 * ball_radius
@@ -540,7 +632,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
             1.0 - 0.61 * math.exp(-0.73 * ell))
         h = max(h, min_film)
         fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef, lam_s,
-                                   cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64)
+                                   cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, kap_e, entrainment)
         if not spin_moment:
             mz = 0.0
     Fx = -q * nx + fx * t1x + fy * t2x
@@ -559,7 +651,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
 def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                   c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                  lam_s=0.0):
+                  lam_s=0.0, kap_e=0.0):
     """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
 
     Parameters
@@ -583,6 +675,8 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
     lam_s : float, optional
         Limiting-shear coefficient Λ of the smooth cap (MODEL.md §6a); 0 (default): pure
         Crook. Last, so that calls written before it existed keep working.
+    kap_e : float, optional
+        κ = G/p of the film's elastic compliance (MODEL.md §6b); 0 (default): none.
     force, moment : ndarray (B, 2, Z, 3), out
         On each ball at its contact with race k, N; about the ball centre, N m.
     penetration, load : ndarray (B, 2, Z), out
@@ -592,20 +686,20 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                      lam_s)
+                      lam_s, kap_e)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
 def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                            e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                            c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration,
-                           load, lam_s=0.0):
+                           load, lam_s=0.0, kap_e=0.0):
     """:func:`race_contacts` with the contacts spread over numba's threads."""
     for idx in prange(c.shape[0] * 2 * c.shape[1]):
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                      lam_s)
+                      lam_s, kap_e)
 
 
 @njit(cache=True, error_model="numpy")

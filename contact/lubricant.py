@@ -37,6 +37,11 @@ class Lubricant:
         the traction law ``ContactLaw(traction='crook-limited')`` bounds the local shear
         stress smoothly by tau_L = Lambda p. 0: no limit. Default 0.047, Bair & Winer's
         (1979) value for a mineral oil.
+    film_shear_modulus_coefficient : float
+        kappa = G / p > 0, the film's elastic shear modulus over the pressure (MODEL.md §6b),
+        used where the contact law has ``film_elasticity``: it bounds the traction's initial
+        slope. Default 2 pi 0.047 = 0.2953 (tau_L / G -> 1/(2 pi), Proc. R. Soc. A 372 (1980)
+        155; G 0.1-1 GPa over 1-2 GPa for a mineral oil, Johnson & Roberts 1974).
     """
 
     viscosity: float
@@ -46,6 +51,7 @@ class Lubricant:
     thermal_conductivity: float
     density: float
     limiting_shear_coefficient: float = 0.047
+    film_shear_modulus_coefficient: float = 0.2953
 
     def __post_init__(self) -> None:
         _check_positive("viscosity", self.viscosity)
@@ -56,6 +62,7 @@ class Lubricant:
         _check_positive("thermal_conductivity", self.thermal_conductivity)
         _check_positive("density", self.density, allow_zero=True)
         _check_positive("limiting_shear_coefficient", self.limiting_shear_coefficient, allow_zero=True)
+        _check_positive("film_shear_modulus_coefficient", self.film_shear_modulus_coefficient)
 
     def viscosity_at(self, pressure, temperature=None):
         """Barus viscosity eta = eta_0 exp(c_etaP p - c_etaT (T - T_R)), Pa s (P11).

@@ -27,7 +27,8 @@ __all__ = ["Traction", "crook_traction", "newtonian_slope", "newtonian_traction"
 # Public API
 # ---------------------------------------------------------------------------------------
 def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=None,
-                   order=16, derivatives=False, limiting_shear=None, fast=False) -> Traction:
+                   order=16, derivatives=False, limiting_shear=None, fast=False, film_modulus=None,
+                   entrainment=None) -> Traction:
     """Crook thermal EHD traction force and spin moment on the ball (MODEL.md §6, P12–P16).
 
     Integrates τ = η_m u / h over the Hertz ellipse x²/b² + y²/a² ≤ 1 with pressure
@@ -69,6 +70,13 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
         Λ p tanh(|τ_Crook|/(Λ p)) along the local slip (MODEL.md §6a,
         :func:`contact.traction_law.limit_shear`; the Jacobian differentiates it exactly).
         ``None`` (default) or 0 = off, the paper's pure Crook law.
+    film_modulus : float, optional
+        κ = G/p > 0: put the film's elastic shear compliance, shear modulus G = κ p, in series
+        with the (limited) Crook law (MODEL.md §6b, :mod:`contact.film_elasticity`); needs
+        ``entrainment``; no ``derivatives``. None (default): no elastic compliance.
+    entrainment : array_like, optional
+        Signed entrainment speed ū along t1, m/s (with ``film_modulus``): sets the inlet side
+        and the time the oil spends in the contact.
     fast : bool
         Use the fast rule meant for the dynamic model's right-hand side (module docstring,
         "Fast rule"): all contacts in one fixed-size float32 block, 4–5× cheaper per call
@@ -117,6 +125,15 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
         if lam_s == 0.0:
             lam_s = None  # no cap
     c1_coef = c_t / (8.0 * k_c)  # c1² = η c1_coef
+    if film_modulus is not None:
+        kap = float(film_modulus) if isinstance(film_modulus, (int, float, np.floating)) else float("nan")
+        if not (np.isfinite(kap) and kap > 0):
+            raise ValueError(f"film_modulus must be a positive number or None, got {film_modulus!r}")
+        if entrainment is None:
+            raise ValueError("entrainment is required with film_modulus")
+        if derivatives:
+            raise ValueError("derivatives are not available with film_modulus")
+        ent = _as_array("entrainment", entrainment)
 
     if flat is None:
         shape = np.broadcast_shapes(ux.shape, uy.shape, om.shape, a.shape, b.shape, pm.shape,
@@ -127,18 +144,22 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
     else:
         shape, (ux, uy, om, a, b, pm, hh) = flat
         eta_t = np.full(ux.shape[0], eta0)
+    elastic = None
+    if film_modulus is not None:
+        elastic = (kap, np.broadcast_to(ent, shape).reshape(-1))
     if fast:
         with np.errstate(over="ignore", invalid="ignore"):
             res = _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives,
-                              lam_s)  # (4 or 13, n), rows contiguous
+                              lam_s, elastic)  # (4 or 13, n), rows contiguous
         bad = ~np.all(np.isfinite(res), axis=0)
         if bad.any():  # float32 overflow (extreme slip at high pressure): redo in float64
             i = np.flatnonzero(bad)
+            el = None if elastic is None else (elastic[0], elastic[1][i])
             res[:, i] = _accurate_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i], c_p, c1_coef,
-                                        order, derivatives, lam_s).T
+                                        order, derivatives, lam_s, el).T
     else:
         res = _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order,
-                              derivatives, lam_s).T.copy()
+                              derivatives, lam_s, elastic).T.copy()
     jac = res[4:].T.reshape(shape + (3, 3)) if derivatives else None
     return Traction(res[0].reshape(shape), res[1].reshape(shape), res[2].reshape(shape),
                     res[3].reshape(shape), jac)

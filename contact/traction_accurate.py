@@ -36,6 +36,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .film_elasticity import elastic_stress, series_factor
 from .traction_law import _gauss01, limit_shear, thermal_factor
 
 __all__ = ["rule_size"]
@@ -358,9 +359,10 @@ def _nodes(mode, A, idx, dirs, wdirs, a, b, pm, n_rad):
                          A["delta"][idx], dirs, wdirs, a, b, pm, n_rad)
 
 
-def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, c_p, c1_coef, derivatives, lam_s):
+def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, c_p, c1_coef, derivatives, lam_s, elastic=None):
     """Moments of the Crook stress, smoothly limited to Λ p with ``lam_s`` = Λ (MODEL.md §6a),
-    over the nodes (node arrays (k, M), contact arrays (k,)).
+    over the nodes (node arrays (k, M), contact arrays (k,)); ``elastic`` = (κ, a, b, ū) puts
+    the film's elastic compliance G = κ p in series (MODEL.md §6b; no derivatives).
 
     Returns (k, 4) [fx, fy, mz, heat] or, with derivatives, (k, 13) with the row-major
     3×3 Jacobian appended.  With τ = g u and u = (u_x − ω y, u_y + ω x):
@@ -381,6 +383,11 @@ def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, c_p, c1_coef, derivatives, 
     if derivatives:
         wk = eta * H
         wk *= c12  # ∂τ/∂u = g I + k u uᵀ
+    if elastic is not None:  # Maxwell film in series (MODEL.md §6b)
+        kap, a, b, ent = elastic
+        tau_e = elastic_stress(x, y, a[:, None], b[:, None], vx, vy, om[:, None], ent[:, None],
+                               1.0 / inv_h[:, None], kap * p)
+        wg = wg * series_factor(wg, np.sqrt(v2), tau_e)
     if lam_s is not None:  # |τ| = Λp tanh(|τ_C|/(Λp)) (MODEL.md §6a)
         wg, wk = limit_shear(wg, np.sqrt(v2), lam_s * p, wk if derivatives else None)
     wg *= W
@@ -423,8 +430,9 @@ def _wsum(w, f):
 # ---------------------------------------------------------------------------------------
 # All contacts of a call
 # ---------------------------------------------------------------------------------------
-def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s):
-    """The accurate rule (module docstring) for validated flat arrays (n,)."""
+def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s, elastic=None):
+    """The accurate rule (module docstring) for validated flat arrays (n,); ``elastic`` =
+    (κ, ū (n,)) adds the film's elastic compliance (MODEL.md §6b)."""
     n = ux.shape[0]
     live = (a > 0) & (b > 0)
     a_s = np.where(live, a, 1.0)
@@ -463,6 +471,7 @@ def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, deriva
             idx = idx_g[sl]
             x, y, W, p = _nodes(m, A, idx, dirs[sl], wdirs[sl], a_s[idx], b_s[idx], pm[idx],
                                 n_rad)
+            el = None if elastic is None else (elastic[0], a_s[idx], b_s[idx], elastic[1][idx])
             res[idx] = _integrate(x, y, W, p, ux[idx], uy[idx], om[idx], eta_t[idx], inv_h[idx],
-                                  c_p, c1_coef, derivatives, lam_s)
+                                  c_p, c1_coef, derivatives, lam_s, el)
     return res

@@ -141,9 +141,10 @@ def _fast_work(R, D, n):
     return work[1]
 
 
-def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s):
+def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s, elastic=None):
     """The fast rule for validated flat float64 arrays (n,).  Returns (4, n) [fx, fy, mz,
-    heat] or, with derivatives, (13, n) with the row-major Jacobian appended.
+    heat] or, with derivatives, (13, n) with the row-major Jacobian appended; ``elastic`` =
+    (κ, ū (n,)) puts the film's elastic compliance in series (MODEL.md §6b, no derivatives).
 
     Nodes are laid out (R radial, D directions, n contacts), contacts innermost, so that
     per-ray arrays (D, n) broadcast over whole contiguous blocks."""
@@ -153,12 +154,13 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
         res = np.zeros((13 if derivatives else 4, n))
         i = np.flatnonzero(lo > 0.0)
         if i.size:
+            el = None if elastic is None else (elastic[0], elastic[1][i])
             res[:, i] = _fast_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i],
-                                    c_p, c1_coef, order, derivatives, lam_s)
+                                    c_p, c1_coef, order, derivatives, lam_s, el)
         return res
     if c_p * pm.max() > _FAST_LAMBDA_MAX[bool(derivatives)]:
         return _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order,
-                               derivatives, lam_s).T.copy()
+                               derivatives, lam_s, elastic).T.copy()
     tab = _fast_tables(order)
     R, D = tab["R"], tab["D"]
 
@@ -263,6 +265,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
     np.add(rho, r2, out=sg)
     sg *= t  # 1 − X² − Y² = (ρ_max − ρ)(ρ + ρ_2)
     np.sqrt(sg, out=sg)
+    sigma = sg.copy() if elastic is not None else None
     lsig = None
     if c_p > 0.0:
         lrow = np.empty((D, n), _F32)
@@ -290,7 +293,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
         Ar = np.empty((D, n), _F32)
         Ar[...] = (uOx * uOx + uOy * uOy) * cth + 1e-12
         t += Ar
-    u2 = t.copy() if lam_s is not None else None
+    u2 = t.copy() if lam_s is not None or elastic is not None else None
     psi = t
     psi *= E  # ψ = c1² |u|²
     # G(ψ) = asinh(s)/(s r), s = √ψ, r = √(1 + ψ); asinh(s) = log1p(z), z = s + ψ/(1 + r),
@@ -327,6 +330,20 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
         Hk *= E
         Hk *= E  # k h/(c1c η_T²), ∂τ/∂u = g I + k u uᵀ
     G *= E  # g h/η_T
+    if elastic is not None:
+        # Maxwell film in series (MODEL.md §6b): g/(1 + R), R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|)
+        # with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.compiled)
+        kap, ent = elastic
+        sgn = np.where(ent < 0, -1.0, 1.0)
+        live = (ent != 0.0)
+        er0 = np.where(live, eta_t * np.abs(ent) / (np.sqrt(cth) * kap * pm * b), 0.0).astype(_F32)
+        yy = Yo.astype(_F32) + rho * s
+        xi = Xo.astype(_F32) + rho * c + sgn.astype(_F32) * np.sqrt(np.maximum(_ONE - yy * yy, _F32(0.0)))
+        omb = (om * b).astype(_F32)
+        oxi = omb * xi
+        w2 = u2 * (1.0 / cth).astype(_F32) + oxi * (_F32(0.25) * oxi - uOy.astype(_F32) - omb * c * rho)
+        dd = sigma * np.abs(xi) * np.sqrt(np.maximum(w2, _F32(0.0))) + _F32(1e-30)  # no 0/0 at ū → 0
+        G = G * (dd / (dd + G * np.sqrt(u2) * er0))
     if lam_s is not None:
         # |τ| = Λp tanh(|τ_C|/(Λp)) (MODEL.md §6a) in this rule's units: g h/η_T, u' = c1(η_T) u
         # (|u'| = √u2), so τ_L' = Λ p h c1(η_T)/η_T with p = (λσ)/c_ηP (σ p_max without c_ηP)

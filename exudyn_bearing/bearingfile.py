@@ -22,6 +22,7 @@ Example::
     thermal_conductivity = 0.14
     density = 860
     limiting_shear_coefficient = 0.047   # tau_L / p (MODEL.md §6a); 0: no limit
+    film_shear_modulus_coefficient = 0.2953  # G / p of the film (MODEL.md §6b)
     [drag]                           # optional; fully flooded sphere drag if absent
     drag_coefficient = 0.5
     oil_volume_fraction = 1.0

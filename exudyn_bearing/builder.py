@@ -61,6 +61,14 @@ class BearingHandle:
         n = 6 * len(self.nodeNumbers)
         return data[:, 0], data[:, 1:1 + n], data[:, 1 + n:1 + 2 * n]
 
+    def RecommendedStep(self) -> float:
+        """The time step this bearing needs at its start state, s: 1e-4 s, or less for small
+        balls at high contact stiffness (:func:`exudyn_bearing.steprule.recommended_step`).
+        ``run_solver`` uses the smallest over its bearings unless a step is given."""
+        from .steprule import NOMINAL_STEP, recommended_step
+
+        return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
+
     def Results(self, mbs, stride: int = 1):
         """Bearing outputs per recorded step (:class:`exudyn_bearing.outputs.BearingResults`)."""
         from .outputs import compute_results

@@ -56,7 +56,8 @@ def _simulate(args) -> int:
     from .runner import SolverSettings, simulate
 
     setup = _setup(args.bearing)
-    settings = SolverSettings(solver=args.solver, step=args.step, output_step=max(args.step, args.output_step))
+    settings = SolverSettings(solver=args.solver, step=args.step,
+                              output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
                        contact_law=ContactLaw(traction=args.traction, quadrature_order=args.order),
@@ -161,7 +162,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--time", type=float, default=0.05, help="simulated time, s")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     p.add_argument("--solver", choices=SOLVERS, default="generalized-alpha")
-    p.add_argument("--step", type=float, default=1e-4, help="time step, s")
+    p.add_argument("--step", type=float, default=None,
+                   help="time step, s (default: 1e-4, less for small, stiff balls; docs/MODEL.md §10a)")
     p.add_argument("--output-step", type=float, default=5e-4, help="output period, s")
     p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
     _traction_option(p)

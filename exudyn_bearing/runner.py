@@ -30,8 +30,9 @@ class SolverSettings:
         Exudyn's implicit generalized-alpha (numerical damping ``spectral_radius``), the
         undamped trapezoidal rule (Newmark, rho_inf = 1), explicit Lie-group RK44 at a
         fixed step, or adaptive DOPRI5 (``step`` is the initial/maximum step).
-    step : float
-        Time step, s.
+    step : float or None
+        Time step, s. None (default): each bearing's ``RecommendedStep()`` (1e-4 s, less for
+        small balls at high contact stiffness; :mod:`exudyn_bearing.steprule`), the smallest.
     spectral_radius : float
         rho_inf of generalized-alpha. 0.5 by default: with 0.8 a pure-axial 1 kN run grows a
         spurious radial oscillation of the free inner race from ~0.2 s (ball orbital speeds
@@ -53,7 +54,7 @@ class SolverSettings:
     """
 
     solver: str = "generalized-alpha"
-    step: float = 1e-4
+    step: float | None = None
     spectral_radius: float = 0.5
     relative_tolerance: float = 1e-4
     absolute_tolerance: float = 1e-6
@@ -66,6 +67,8 @@ class SolverSettings:
             raise ValueError(f"solver must be one of {SOLVERS}, got {self.solver!r}")
         for name in ("step", "relative_tolerance", "absolute_tolerance", "output_step"):
             value = getattr(self, name)
+            if name == "step" and value is None:
+                continue
             if not (math.isfinite(value) and value > 0):
                 raise ValueError(f"{name} must be positive, got {value!r}")
         if not 0.0 <= self.spectral_radius <= 1.0:
@@ -74,6 +77,16 @@ class SolverSettings:
             raise ValueError(f"newton_contractivity must lie in (0, 1), got {self.newton_contractivity!r}")
         if self.jacobian not in ("block", "exudyn"):
             raise ValueError(f"jacobian must be 'block' or 'exudyn', got {self.jacobian!r}")
+
+    def resolved(self, handles) -> "SolverSettings":
+        """These settings with ``step`` None replaced by the smallest ``RecommendedStep()``
+        of the bearing ``handles`` (1e-4 s without any)."""
+        if self.step is not None:
+            return self
+        from .steprule import NOMINAL_STEP
+
+        steps = [h.RecommendedStep() for h in handles if hasattr(h, "RecommendedStep")]
+        return replace(self, step=min(steps, default=NOMINAL_STEP))
 
     @property
     def implicit(self) -> bool:
@@ -165,6 +178,7 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
     and checks the result (raises :class:`BearingSimulationError` on divergence)."""
     import exudyn as exu
 
+    settings = settings.resolved(handles)
     if settings.implicit and settings.jacobian == "block":
         for h in handles:
             con, ref = h.connector, h.connector.reference
@@ -261,7 +275,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     summary = results.summary()
     estimate = None
     if error_estimate:
-        finer = replace(settings, step=0.5 * settings.step, output_step=settings.output_step,
+        finer = replace(settings, step=0.5 * info.solver["step"], output_step=settings.output_step,
                         relative_tolerance=0.5 * settings.relative_tolerance,
                         absolute_tolerance=0.5 * settings.absolute_tolerance)
         ref = simulate(bearing, lubricant, axial=axial, radial=radial, rpm=rpm, time=time, settings=finer, drag=drag,

@@ -57,7 +57,7 @@ class Balance:
         return math.asin(abs(self.ball_omega[1]) / np.linalg.norm(self.ball_omega))
 
 
-def _contact(bearing, lubricant, c, groove, w_c, w_b, w_race, race, limiting_shear=None):
+def _contact(bearing, lubricant, c, groove, w_c, w_b, w_race, race, limiting_shear=None, film_modulus=None):
     """Normal load, force on the ball and moment about its centre of one contact at
     azimuth 0 (x radial, y circumferential = rolling direction t1, z axial)."""
     r = bearing.ball_radius
@@ -82,7 +82,7 @@ def _contact(bearing, lubricant, c, groove, w_c, w_b, w_race, race, limiting_she
     h = max(float(film.central_film_thickness(entrain, load, r_x, con.ellipticity, bearing.effective_modulus,
                                               lubricant)), 1e-8)
     tr = crook_traction(u @ t1, u @ t2, spin, a, b, con.max_pressure(load), h, lubricant, order=24,
-                        limiting_shear=limiting_shear)
+                        limiting_shear=limiting_shear, film_modulus=film_modulus, entrainment=entrain)
     tangential = float(tr.fx) * t1 + float(tr.fy) * t2
     moment = r * np.cross(n, tangential) + float(tr.mz) * n
     return -load * n + tangential, moment, p, load, angle, h
@@ -97,11 +97,13 @@ def rolling_cage_speed(c, axis, p_in, p_out, w_i):
     return w_c
 
 
-def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density, limiting_shear=None) -> Balance:
+def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density, limiting_shear=None,
+                  film_modulus=None) -> Balance:
     """Steady state of a bearing under pure ``axial`` load (N), outer race fixed, inner
     race at ``rpm``, with drag F_D = 1/2 C_D rho pi r² v² for the given C_D and oil
     density (kg/m³; MODEL.md §8) and Crook's traction, capped smoothly at
-    ``limiting_shear`` x p (MODEL.md §6a; None: the paper's pure law)."""
+    ``limiting_shear`` x p (MODEL.md §6a; None: the paper's pure law), with the film's elastic
+    compliance G = ``film_modulus`` x p in series (MODEL.md §6b; None: none)."""
     w_i = rpm * math.pi / 30
     r, z, m = bearing.ball_radius, bearing.balls, bearing.ball_mass
     inertia = 0.4 * m * r ** 2
@@ -118,8 +120,9 @@ def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density,
     def contacts(x):
         w_c, w_b, c, shift = unpack(x)
         inner = _contact(bearing, lubricant, c, np.array([r_gi, 0.0, z_gi + shift]), w_c, w_b, w_i, "inner",
-                         limiting_shear)
-        outer = _contact(bearing, lubricant, c, np.array([r_go, 0.0, z_go]), w_c, w_b, 0.0, "outer", limiting_shear)
+                         limiting_shear, film_modulus)
+        outer = _contact(bearing, lubricant, c, np.array([r_go, 0.0, z_go]), w_c, w_b, 0.0, "outer", limiting_shear,
+                         film_modulus)
         return w_c, w_b, c, inner, outer
 
     def residual(x):

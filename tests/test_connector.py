@@ -205,8 +205,12 @@ def hand_contacts(c, v, w, race_pos, race_rot, race_vel, race_omega, race, law):
             lam = law.limiting_shear
             if lam is None and law.traction == "crook-limited":
                 lam = LUB.limiting_shear_coefficient
+            # the film's elastic compliance (MODEL.md §6b): on for 'crook-limited' unless switched
+            elastic = law.traction == "crook-limited" if law.film_elasticity is None else law.film_elasticity
+            kappa = LUB.film_shear_modulus_coefficient if elastic else None
             tr = crook_traction(u_x, u_y, spin, a, b, p_max, h, LUB, order=law.quadrature_order,
-                                limiting_shear=lam, fast=law.fast_quadrature)
+                                limiting_shear=lam, fast=law.fast_quadrature, film_modulus=kappa,
+                                entrainment=entrain)
             fx, fy = float(tr.fx), float(tr.fy)
             mz = float(tr.mz) if law.spin_moment else 0.0
         out["force"].append(-load * n + fx * t1 + fy * t2)

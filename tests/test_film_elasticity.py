@@ -62,3 +62,156 @@ def test_series_limits():
     assert g[1] * slip[1] * f[1] == pytest.approx(1e3, rel=1e-6)
     assert f[2] == 1.0 and f[3] == 1.0
     assert np.all((f >= 0) & (f <= 1))
+
+
+# ---------------------------------------------------------------------------------------
+# The compliance in the traction rules (accurate, numpy fast, compiled fast)
+# ---------------------------------------------------------------------------------------
+import dataclasses  # noqa: E402
+
+from contact import compiled  # noqa: E402
+from contact.ballrace import ContactLaw  # noqa: E402
+from contact.lubricant import REFERENCE_LUBRICANT as REF  # noqa: E402
+from contact.traction import crook_traction  # noqa: E402
+
+KAPPA = 0.2953  # G/p = 2π Λ, Λ = 0.047 (MODEL.md §6b)
+CONTACT = (1.4e-3, 0.2e-3, 1.7e9, 0.3e-6)  # a (transverse), b (rolling), p_max, h: STIFFNESS.md's contact
+STIFF_OIL = dataclasses.replace(REF, viscosity=1e4)  # viscous stress >> elastic everywhere
+
+
+def _rules(ux, uy, om, a, b, pm, h, lub, ent, lam=None):
+    """(fx, fy, mz) by the accurate rule (order 32), the numpy fast rule and the compiled one."""
+    kw = dict(limiting_shear=lam, film_modulus=KAPPA, entrainment=ent)
+    acc = crook_traction(ux, uy, om, a, b, pm, h, lub, order=32, **kw)
+    fast = crook_traction(ux, uy, om, a, b, pm, h, lub, fast=True, **kw)
+    comp = compiled.crook_fast(*([v] for v in (ux, uy, om, a, b, pm, h)), lub, **kw)
+    return {"accurate": (float(acc.fx), float(acc.fy), float(acc.mz)),
+            "fast": (float(fast.fx), float(fast.fy), float(fast.mz)),
+            "compiled": tuple(float(v[0]) for v in comp[:3])}
+
+
+@pytest.mark.parametrize("entrainment", [3.0, -2.0])
+def test_rules_reach_the_elastic_slope_of_a_pressure_proportional_modulus(entrainment):
+    """G = κ p, p = p_max √(1 − X² − Y²): ∬ p ξ dA = p_max a b² ∫ (π/2)(1 − Y²)^{3/2} dY
+    = (3π²/16) p_max a b², so in the elastic limit f = κ (3π²/16) p_max a b² u/(|ū| h)."""
+    a, b, pm, h = CONTACT
+    u = (2e-6, -1e-6)
+    slope = KAPPA * 3 * np.pi ** 2 / 16 * pm * a * b ** 2 / (abs(entrainment) * h)
+    for name, (fx, fy, _) in _rules(u[0], u[1], 0.0, a, b, pm, h, STIFF_OIL, entrainment).items():
+        # the viscous compliance left (η 1e4 Pa s) is ~1e-4 of the elastic one
+        assert fx == pytest.approx(slope * u[0], rel=2e-3), name
+        assert fy == pytest.approx(slope * u[1], rel=2e-3), name
+
+
+def _elastic_spin_moment(om, a, b, pm, h, ent, n=160):
+    """M_z of the elastic stress |τ_e| = κ p |ξ| |w|/(|ū| h), w = (−ω y, ω x − ω ξ/2) the
+    strain integrated from the inlet edge x_in = −sign(ū) b √(1 − y²/a²), ξ = x − x_in,
+    directed along the local slip u = ω (−y, x) as the series law puts it (MODEL.md §6b),
+    written here by Gauss quadrature."""
+    r, wr = np.polynomial.legendre.leggauss(n)
+    r, wr = 0.5 * (r + 1), 0.5 * wr
+    t = 2 * np.pi * (np.arange(4 * n) + 0.5) / (4 * n)
+    R, T = np.meshgrid(r, t, indexing="ij")
+    W = np.outer(wr * r, np.full(t.size, 2 * np.pi / t.size)) * a * b
+    x, y = b * R * np.cos(T), a * R * np.sin(T)
+    p = pm * np.sqrt(np.maximum(1 - R ** 2, 0))
+    xi = x + np.sign(ent) * b * np.sqrt(np.maximum(1 - (y / a) ** 2, 0))
+    mag = KAPPA * p * np.abs(xi) / (abs(ent) * h) * np.hypot(om * y, om * x - 0.5 * om * xi)
+    ux, uy = -om * y, om * x
+    speed = np.hypot(ux, uy)
+    tx, ty = mag * ux / speed, mag * uy / speed
+    return float(np.sum(W * (x * ty - y * tx)))
+
+
+@pytest.mark.parametrize("entrainment", [3.0, -2.0])
+def test_rules_reach_the_elastic_spin_moment(entrainment):
+    """Pure spin in the elastic limit: the spin moment of the rules equals the moment of the
+    elastic stress integrated by brute force (the quadratures follow the spin pole, which
+    here sits at the centre)."""
+    a, b, pm, h = CONTACT
+    om = 1e-3  # rad/s: small enough for the elastic limit at η 1e4 Pa s
+    ref = _elastic_spin_moment(om, a, b, pm, h, entrainment)
+    for name, (fx, fy, mz) in _rules(0.0, 0.0, om, a, b, pm, h, STIFF_OIL, entrainment).items():
+        assert mz == pytest.approx(ref, rel=5e-3), name
+        assert abs(fx) < 1e-3 * abs(ref) / b  # no net force from a centred spin
+
+
+def test_slow_entrainment_leaves_the_crook_law():
+    """|τ_e| ∝ 1/|ū|: at ū → 0 the oil stays in the contact and the law is Crook's (capped)."""
+    a, b, pm, h = CONTACT
+    for q in ((1e-3, 2e-4, 0.0), (0.02, -0.01, 40.0)):
+        crook = crook_traction(*q, a, b, pm, h, REF, order=32, limiting_shear=0.047)
+        for name, got in _rules(*q, a, b, pm, h, REF, 1e-9, lam=0.047).items():
+            assert got[0] == pytest.approx(float(crook.fx), rel=5e-3, abs=1e-6), name
+            assert got[1] == pytest.approx(float(crook.fy), rel=5e-3, abs=1e-6), name
+
+
+def test_elastic_film_lowers_the_initial_slope_by_orders_and_keeps_the_plateau():
+    """At 1 um/s of slip the capped Crook law already gives most of its plateau (STIFFNESS.md:
+    51 of 70 N); with the film in series the force is ~1e-3 of it, and at 0.1 m/s both sit
+    on the plateau (below Λ Q)."""
+    a, b, pm, h = CONTACT
+    cap = 0.047 * 2 * np.pi * a * b * pm / 3
+    for rule in ("accurate", "fast", "compiled"):
+        small = _rules(1e-6, 0.0, 0.0, a, b, pm, h, REF, 3.0, lam=0.047)[rule][0]
+        big = _rules(0.1, 0.0, 0.0, a, b, pm, h, REF, 3.0, lam=0.047)[rule][0]
+        crook_small = float(crook_traction(1e-6, 0.0, 0.0, a, b, pm, h, REF, limiting_shear=0.047).fx)
+        assert 0 < small < 2e-3 * crook_small, rule
+        assert 0.95 * cap < big <= cap * (1 + 1e-3), rule
+
+
+def test_traction_is_monotone_in_slip_and_below_the_cap():
+    a, b, pm, h = CONTACT
+    cap = 0.047 * 2 * np.pi * a * b * pm / 3
+    u = np.geomspace(1e-7, 1.0, 60)
+    n = u.size
+    got = compiled.crook_fast(u, np.zeros(n), np.full(n, 5.0), np.full(n, a), np.full(n, b), np.full(n, pm),
+                              np.full(n, h), REF, limiting_shear=0.047, film_modulus=KAPPA, entrainment=3.0)
+    assert np.all(np.diff(got[0]) > 0)
+    assert np.all(np.hypot(got[0], got[1]) <= cap * (1 + 1e-3))
+    assert np.all(got[3] >= 0)  # heat
+
+
+def test_compiled_rule_matches_the_accurate_rule_on_reference_states():
+    """Fast rule (compiled, order 16) against the accurate rule (order 32) on the reference
+    bearing's contact states, random entrainment: worst error ~5e-3 of the force scale
+    (the capped law alone: 6.8e-3, MODEL.md §6a), median ~5e-5."""
+    from tests.test_compiled import _contacts, _scale
+
+    ux, uy, om, a, b, pm, h = _contacts(200, seed=3)
+    rng = np.random.default_rng(5)
+    ent = rng.uniform(1, 8, ux.size) * rng.choice([-1, 1], ux.size)
+    kw = dict(limiting_shear=0.047, film_modulus=KAPPA, entrainment=ent)
+    got = compiled.crook_fast(ux, uy, om, a, b, pm, h, REF, **kw)
+    ref = crook_traction(ux, uy, om, a, b, pm, h, REF, order=32, **kw)
+    fast = crook_traction(ux, uy, om, a, b, pm, h, REF, fast=True, **kw)
+    scale = _scale(ref.fx, ref.fy, ref.mz, np.maximum(a, b))
+    err = (np.abs(got[0] - ref.fx) + np.abs(got[1] - ref.fy) + np.abs(got[2] - ref.mz) / np.maximum(a, b)) / scale
+    assert np.max(err) < 1e-2 and np.median(err) < 3e-4
+    # the numpy fast rule has the same nodes: agreement to float32 precision
+    same = (np.abs(got[0] - fast.fx) + np.abs(got[2] - fast.mz) / np.maximum(a, b)) / scale
+    assert np.max(same) < 2e-5
+
+
+def test_where_the_compliance_lives():
+    """κ is a lubricant property (TOML key); the default law applies it, the paper's law not."""
+    from exudyn_bearing.bearingfile import BearingFile, dumps_bearing, loads_bearing
+    from exudyn_bearing.presets import REFERENCE_BEARING
+
+    oil = dataclasses.replace(REF, film_shear_modulus_coefficient=0.21)
+    text = dumps_bearing(BearingFile(REFERENCE_BEARING, oil))
+    assert "film_shear_modulus_coefficient = 0.21" in text
+    assert loads_bearing(text).lubricant.film_shear_modulus_coefficient == 0.21
+    assert ContactLaw().film_modulus_for(REF) == pytest.approx(2 * np.pi * 0.047, rel=1e-3)
+    assert ContactLaw(traction="crook").film_modulus_for(REF) is None
+    assert ContactLaw(traction="crook", film_elasticity=True).film_modulus_for(REF) == REF.film_shear_modulus_coefficient
+    assert ContactLaw(film_elasticity=False).film_modulus_for(REF) is None
+    assert ContactLaw(traction="none").film_modulus_for(REF) is None
+    with pytest.raises(ValueError, match="film_shear_modulus_coefficient"):
+        dataclasses.replace(REF, film_shear_modulus_coefficient=0.0)
+    with pytest.raises(ValueError, match="film_elasticity"):
+        ContactLaw(film_elasticity="yes")
+    with pytest.raises(ValueError, match="film_modulus"):
+        crook_traction(0.1, 0, 0, *CONTACT, REF, film_modulus=-1.0, entrainment=1.0)
+    with pytest.raises(ValueError, match="entrainment"):
+        crook_traction(0.1, 0, 0, *CONTACT, REF, film_modulus=0.3)

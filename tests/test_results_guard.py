@@ -42,6 +42,9 @@ DRAG_COEFFICIENT, OIL_DENSITY = 0.5, 860.0
 #: MODEL.md §6a: the default law caps Crook's stress smoothly at Lambda p, Lambda = 0.047 for a
 #: paraffinic mineral oil (Höglund 1999; Bair & Winer).
 LIMITING_SHEAR = 0.047
+#: MODEL.md §6b: and puts the film's elastic shear compliance in series, G = kappa p with
+#: kappa = 2 pi Lambda (tau_L/G -> 1/(2 pi), Proc. R. Soc. A 372 (1980) 155).
+FILM_MODULUS = 2.0 * math.pi * 0.047
 
 
 def run(axial, time, **kw):
@@ -77,7 +80,7 @@ def balance():
         key = (axial, lubricant, drag_coefficient)
         if key not in cache:
             cache[key] = solve_balance(REFERENCE_BEARING, lubricant, axial, RPM, drag_coefficient, OIL_DENSITY,
-                                       LIMITING_SHEAR)
+                                       LIMITING_SHEAR, FILM_MODULUS)
         return cache[key]
 
     return get
