@@ -126,7 +126,8 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
             lam_s = None  # no cap
     c1_coef = c_t / (8.0 * k_c)  # c1² = η c1_coef
     if film_modulus is not None:
-        kap = float(film_modulus) if isinstance(film_modulus, (int, float, np.floating)) else float("nan")
+        ok = isinstance(film_modulus, (int, float, np.floating)) and not isinstance(film_modulus, bool)
+        kap = float(film_modulus) if ok else float("nan")
         if not (np.isfinite(kap) and kap > 0):
             raise ValueError(f"film_modulus must be a positive number or None, got {film_modulus!r}")
         if entrainment is None:
