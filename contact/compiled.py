@@ -175,10 +175,20 @@ _CAP_X32 = _F(_CAP_X)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
-def _capped_node(rm, r2, cq, br, pr, lamh32, a032, itlc32, tlc32):
-    """g of one node with the smooth limiting shear (float32; see :func:`_rays32_capped`)."""
+def _tanh32(x):
+    """tanh(x) for x >= 0 by the rational fit above (float32)."""
     p0, p1, p2, p3 = _CP32
     q0, q1, q2, q3 = _CQ32
+    xc = min(x, _CAP_X32)
+    y = xc * xc
+    num = ((p3 * y + p2) * y + p1) * y + p0
+    den = ((q3 * y + q2) * y + q1) * y + q0
+    return xc * num / den
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _capped_node(rm, r2, cq, br, pr, lamh32, a032, itlc32, tlc32):
+    """g of one node with the smooth limiting shear (float32; see :func:`_rays32_capped`)."""
     rho = rm * pr
     sg = math.sqrt((rm - rho) * (rho + r2))  # σ = p/p_max
     eh = _exp32(lamh32 * sg)  # √(η/η_T)
@@ -191,11 +201,7 @@ def _capped_node(rm, r2, cq, br, pr, lamh32, a032, itlc32, tlc32):
     # x = τ_C'/τ_L' = asinh(s) e^{λσ/2}/(√(1 + ψ) tlc σ); g = τ_L' tanh(x)/|u'| with
     # |u'| = s e^{−λσ/2}: one division each
     x = lz * eh * itlc32 / ((u1 - _F1) * rt * sg)
-    xc = min(x, _CAP_X32)
-    y = xc * xc
-    num = ((p3 * y + p2) * y + p1) * y + p0
-    den = ((q3 * y + q2) * y + q1) * y + q0
-    return (tlc32 * sg * eh) * xc * num / (sq * den)
+    return (tlc32 * sg * eh) * _tanh32(x) / sq
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS)
@@ -235,8 +241,6 @@ def _rays32_capped(ir, lam, a0, tlc, rho_tab, w_tab, ray, k):
 def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
     """g of one node with the film's elastic compliance in series (MODEL.md §6b) and, for
     ``tlc32`` > 0, the smooth limiting shear (float32; see :func:`_rays32_elastic`)."""
-    p0, p1, p2, p3 = _CP32
-    q0, q1, q2, q3 = _CQ32
     xo, yo, sgn, omb, uoy, er0, icth = el[0], el[1], el[2], el[3], el[4], el[5], el[6]
     rho = rm * pr
     sg = math.sqrt((rm - rho) * (rho + r2))  # σ = p/p_max
@@ -256,12 +260,7 @@ def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
     d = sg * abs(xi) * math.sqrt(max(w2, _F(0.0))) + _F(1e-30)  # R = τ_C' er0/d (no 0/0 at ū → 0)
     f = d / (d + tc * er0)  # 1/(1 + R), R = τ_v/|τ_e|
     if tlc32 > _F(0.0):
-        x = tc * f * itlc32 / sg
-        xc = min(x, _CAP_X32)
-        y = xc * xc
-        num = ((p3 * y + p2) * y + p1) * y + p0
-        den = ((q3 * y + q2) * y + q1) * y + q0
-        return (tlc32 * sg * eh) * xc * num / (sq * den)
+        return (tlc32 * sg * eh) * _tanh32(tc * f * itlc32 / sg) / sq
     return tc * f * eh / sq
 
 
