@@ -21,7 +21,7 @@ from exudyn_bearing.errors import BearingSimulationError
 from exudyn_bearing.runner import SolverSettings, run_solver
 
 
-def run(axial, sim_time, drag=True, step=1e-4):
+def run(axial, sim_time, drag=True, step=None):
     """One scene: returns the summary over the last third of the run and the run info."""
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
@@ -80,7 +80,8 @@ def main():
                         help="simulated time per load, s: one value for all loads or one per load "
                              "(default: 5 s below 300 N, 2 s below 1.5 kN, where the cage and the ball axes "
                              "settle slowly; 0.3 s above)")
-    parser.add_argument("--step", type=float, default=1e-4, help="time step, s")
+    parser.add_argument("--step", type=float, default=None,
+                        help="time step, s (default: the bearing's recommended step, MODEL.md §10a)")
     parser.add_argument("--no-drag", action="store_true",
                         help="without ball drag (MODEL.md §7: the kinematic slip should then stay near zero)")
     parser.add_argument("--out", default="out/axial_skidding")
