@@ -85,10 +85,18 @@ def main():
     parser.add_argument("--no-drag", action="store_true",
                         help="without ball drag (MODEL.md §7: the kinematic slip should then stay near zero)")
     parser.add_argument("--out", default="out/axial_skidding")
+    parser.add_argument("--compare", default=None,
+                        help="axial_skidding.json of another run whose kinematic slip the figure shows too")
+    parser.add_argument("--compare-label", default="other run", help="its label in the figure")
+    parser.add_argument("--replot", action="store_true", help="redraw the figure from --out's JSON, no runs")
     args = parser.parse_args()
     loads = [float(v) for v in args.loads.split(",")]
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    if args.replot:
+        rows = [r for r in json.loads((out / "axial_skidding.json").read_text()) if "failed" not in r]
+        plot(rows, out, args.compare, args.compare_label)
+        return
     rows, failed = [], []
     times = [float(v) for v in args.time.split(",")] if args.time else None
     if times is not None and len(times) not in (1, len(loads)):
@@ -116,14 +124,23 @@ def main():
     (out / "axial_skidding.md").write_text(text + "\n")
     failures = [dict(axial_N=fa, failed=err) for fa, err in failed]
     (out / "axial_skidding.json").write_text(json.dumps(rows + failures, indent=1))
+    plot(rows, out, args.compare, args.compare_label)
+
+
+def plot(rows, out, compare=None, compare_label="other run"):
+    """The figure of ``rows``, with the kinematic slip of the ``compare`` JSON if given."""
     try:
         from exudyn_bearing.plots import plot_skid_curve
-        plot_skid_curve(*([r[k] for r in rows] for k in ("axial_N", "kinematic_cage_slip_percent", "cage_slip_percent",
-                                                         "attitude_xz_deg", "attitude_yz_deg", "settled")),
-                        path=out / "axial_skidding.png", title="Reference bearing, 1800 rpm")
     except ImportError as err:
         print(f"{err}: no plot")
         return
+    reference = None
+    if compare:
+        other = [r for r in json.loads(Path(compare).read_text()) if "failed" not in r]
+        reference = (compare_label, [r["axial_N"] for r in other], [r["kinematic_cage_slip_percent"] for r in other])
+    plot_skid_curve(*([r[k] for r in rows] for k in ("axial_N", "kinematic_cage_slip_percent", "cage_slip_percent",
+                                                     "attitude_xz_deg", "attitude_yz_deg", "settled")),
+                    path=out / "axial_skidding.png", title="Reference bearing, 1800 rpm", reference=reference)
     print(f"wrote {out}/axial_skidding.png")
 
 

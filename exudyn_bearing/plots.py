@@ -100,9 +100,10 @@ def plot_run(res, path=None, title: str | None = None, fraction: float = 0.5):
 
 
 def plot_skid_curve(loads, kinematic_slip, p19_slip, attitude_xz=None, attitude_yz=None, settled=None,
-                    path=None, title: str = "cage slip against axial load"):
+                    path=None, title: str = "cage slip against axial load", reference=None):
     """Paper figure 5: cage slip (kinematic and P19, %) and mean ball attitude angles (deg)
-    against axial load (N); unsettled points are marked red."""
+    against axial load (N); unsettled points are marked red. ``reference`` = (label, loads,
+    kinematic slip) adds another run's kinematic slip (e.g. another traction law), dotted."""
     plt = _pyplot()
     loads = np.asarray(loads, dtype=float)
     with_angles = attitude_xz is not None
@@ -110,6 +111,10 @@ def plot_skid_curve(loads, kinematic_slip, p19_slip, attitude_xz=None, attitude_
     ax1 = axes[0, 0]
     ax1.plot(loads, kinematic_slip, "o-", label="kinematic cage slip (MODEL.md §7)")
     ax1.plot(loads, p19_slip, "s--", label="cage slip P19 (nominal angle)")
+    if reference is not None:
+        label, ref_loads, ref_slip = reference
+        ax1.plot(ref_loads, ref_slip, "^:", color="grey", label=f"kinematic cage slip, {label}")
+        ax1.set_yscale("symlog", linthresh=0.1)  # the two curves part near the 1 % threshold
     ax1.axhline(1.0, color="grey", lw=0.8)
     ax1.set(xlabel="axial load (N)", ylabel="cage slip (%)", title=title)
     ax1.legend(fontsize=8)
