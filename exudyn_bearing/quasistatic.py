@@ -171,7 +171,11 @@ class _Geometric:
         if self.fc > 0:
             ko_r = self.b.hertz(0.0, "outer", self.method).stiffness
             c_out = g_o + (self.to + (self.fc / ko_r) ** (2.0 / 3.0)) * self.e_r
-            c = np.where((total <= 0)[:, None], c_out, c)
+            # where the centrifugal position clears the inner groove the ball rides on the
+            # outer race alone; starting it between both races at ~zero load (total ~ 0, a
+            # race just touching) leaves Newton with a near-singular stiffness
+            clear = np.linalg.norm(c_out - g_i, axis=1) >= self.ti
+            c = np.where((clear | (total <= 0))[:, None], c_out, c)
         offsets[:, 0] = np.einsum("ij,ij->i", c, self.e_r) - self.b.pitch_radius
         offsets[:, 1] = c[:, 2]
         return offsets
@@ -310,6 +314,27 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
     return x, q_inner, q_outer, (q_inner / k_i) ** (2 / 3), (q_outer / k_o) ** (2 / 3), it, k_eff, delta
 
 
+#: Free contact angles up to this (rad) are deep-groove bearings: both shoulders are high, so
+#: a radial load alone is carried with the grooves centred (contact angles near zero). Above
+#: it the bearing is an angular-contact one, whose low shoulder the full-groove model does
+#: not have: a radial load then needs an axial force (or ``hold_axial``).
+DEEP_GROOVE_MAX_ANGLE = math.radians(20.0)
+
+
+def _centred_radial_start(bearing: Bearing, radial: float, hertz_method: str) -> np.ndarray:
+    """Inner-race start (dx, dy, dz) for a radial load alone (MODEL.md §4): groove centres
+    aligned axially (full toroidal grooves carry it at contact angles near zero, as a
+    deep-groove bearing does) and the race moved radially by the clearance plus the
+    deflections of Stribeck's most heavily loaded ball, Q = 5 F_r / Z."""
+    (r_i, z_i), (r_o, z_o) = bearing.groove_centres()
+    t = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    clearance = t - (r_i - r_o)  # radial play at aligned grooves, m
+    q = 5.0 * radial / bearing.balls
+    deflection = sum((q / bearing.hertz(0.0, race, hertz_method).stiffness) ** (2.0 / 3.0)
+                     for race in ("inner", "outer"))
+    return np.array([max(clearance, 0.0) + deflection, 0.0, z_o - z_i])
+
+
 def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float = 0.0, rpm: float = 0.0,
                             *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
@@ -410,7 +435,17 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         max_iter = 0
         offsets, con, _ = model.solve_balls(x)
     elif axial > 0 or hold_axial:
-        x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+        try:
+            x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+        except QuasiStaticError:
+            # fixed angles cannot carry this radial load, full grooves may (small axial on a
+            # deep-groove bearing): start centred and let the geometric balance move axially
+            if radial == 0 or bearing.contact_angle > DEEP_GROOVE_MAX_ANGLE:
+                raise
+            x[:3] = _centred_radial_start(bearing, radial, hertz_method)
+            x[2] = 0.0 if hold_axial else x[2]
+    elif radial > 0 and bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE:
+        x[:3] = _centred_radial_start(bearing, radial, hertz_method)
     free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])
     target = np.concatenate([[radial, 0.0, axial], moment if moment is not None else [0.0, 0.0]])
     length = bearing.pitch_radius  # moments scaled to forces

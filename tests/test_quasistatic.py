@@ -313,3 +313,39 @@ def test_cli_json():
     assert "fixed-angle" in table
     bad = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "-3"], capture_output=True, text=True)
     assert bad.returncode == 2 and "axial" in bad.stderr
+
+
+def _deep_groove():
+    from exudyn_bearing import Bearing
+
+    return Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                  inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+
+
+def test_deep_groove_radial_load_alone_is_stribeck_with_clearance():
+    """A deep-groove bearing carries a radial load with its grooves centred: the loads
+    follow the discrete Stribeck sum with diametral clearance P_d (Harris, Rolling Bearing
+    Analysis, ch. 7): Q_j = K (delta_r cos psi_j - P_d/2)^1.5, sum Q_j cos psi_j = F_r,
+    K the series stiffness of both contacts at zero contact angle."""
+    brg, fr, pd = _deep_groove(), 2500.0, 10e-6
+    res = solve_load_distribution(brg, radial=fr, rpm=0)
+    k_i, k_o = (brg.hertz(0.0, race).stiffness for race in ("inner", "outer"))
+    k = (k_i ** (-2 / 3) + k_o ** (-2 / 3)) ** -1.5
+    psi = 2 * np.pi * np.arange(brg.balls) / brg.balls
+
+    def loads(dr):
+        return k * np.maximum(dr * np.cos(psi) - pd / 2, 0.0) ** 1.5
+
+    dr = optimize.brentq(lambda d: loads(d) @ np.cos(psi) - fr, pd / 2, 1e-3)
+    np.testing.assert_allclose(res.inner_load, loads(dr), rtol=5e-3, atol=1e-6 * fr)
+    assert abs(res.race_force[2]) < 1e-6 * fr  # no axial force left on the race
+    assert np.degrees(np.abs(res.inner_contact_angle)).max() < 0.5
+
+
+def test_deep_groove_small_axial_with_large_radial():
+    """Fixed angles cannot carry 2.5 kN radial with 200 N axial (1.25 F_r tan a0 = 422 N);
+    full grooves can: the solve falls back to the centred start and balances both loads."""
+    brg = _deep_groove()
+    res = solve_load_distribution(brg, axial=200.0, radial=2500.0, rpm=3000)
+    np.testing.assert_allclose(-res.race_force, [2500.0, 0.0, 200.0], atol=1e-6 * 2500)
+    assert res.inner_contact_angle.max() > 0
