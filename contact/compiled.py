@@ -692,9 +692,13 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
 def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                            e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                            c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration,
-                           load, lam_s=0.0, kap_e=0.0):
-    """:func:`race_contacts` with the contacts spread over numba's threads."""
-    for idx in prange(c.shape[0] * 2 * c.shape[1]):
+                           load, lam_s, kap_e, todo):
+    """:func:`race_contacts` with the contacts spread over numba's threads, for the flat
+    contact indices ``todo`` only (state idx // 2Z, race idx // Z % 2, ball idx % Z; int64):
+    the rest of the outputs is left as it is (a Jacobian's race columns change one race's
+    contacts only)."""
+    for n in prange(todo.shape[0]):
+        idx = todo[n]
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,

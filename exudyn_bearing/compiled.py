@@ -200,8 +200,8 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
 def jacobian_states(pos, rot, vel, w_local, col_group, col_k, col_v, group_mask, eps, turn, p2, r2, v2, w2):
     """The block Jacobian's states (``BearingConnector.jacobian``): state 0 the base, state
     i + 1 column i's perturbation of every node of its group (``group_mask``) — position
-    ``eps[0]``, rotation A -> A turn[k - 3] (``turn`` = exp(eps[1] e_k~)), velocity or local
-    angular velocity ``eps[2]``. Writes p2, r2, v2 and the GLOBAL angular velocities w2
+    ``eps[0]``, rotation A -> A turn[k - 3] (``turn`` = exp(eps[1] e_k~)), velocity ``eps[2]``,
+    local angular velocity ``eps[3]``. Writes p2, r2, v2 and the GLOBAL angular velocities w2
     (B = 1 + columns); returns the step of each column."""
     n = pos.shape[0]
     ncol = col_group.shape[0]
@@ -214,7 +214,7 @@ def jacobian_states(pos, rot, vel, w_local, col_group, col_k, col_v, group_mask,
     steps = np.empty(ncol)
     for i in range(ncol):
         k = col_k[i]
-        steps[i] = eps[2] if col_v[i] else (eps[0] if k < 3 else eps[1])
+        steps[i] = (eps[2] if k < 3 else eps[3]) if col_v[i] else (eps[0] if k < 3 else eps[1])
         for s in range(n):
             if not group_mask[col_group[i], s]:
                 continue
@@ -222,7 +222,7 @@ def jacobian_states(pos, rot, vel, w_local, col_group, col_k, col_v, group_mask,
                 if k < 3:
                     v2[i + 1, s, k] += eps[2]
                 else:
-                    wl[i + 1, s, k - 3] += eps[2]
+                    wl[i + 1, s, k - 3] += eps[3]
             elif k < 3:
                 p2[i + 1, s, k] += eps[0]
             else:
@@ -368,25 +368,15 @@ class CompiledForces:
     def __call__(self, t, pos, rot, vel, omega, same_contacts=None):
         """(out (B, n, 6), react (B, Z, n, 6), penetration (B, 2, Z) m, load (B, 2, Z) N) for
         B node states (omega GLOBAL); the race/cage parts caused by ball j are react[:, j].
-        ``same_contacts`` (bool, (B,)) marks states whose balls and races equal those of
-        state 0 (e.g. only the cage perturbed): their ball–race contacts are copied from
-        state 0 instead of recomputed."""
-        bsz = pos.shape[0]
-        if same_contacts is not None and np.any(same_contacts[1:]):
-            # the ball–race contacts of the distinct states only (state 0 first), then spread
-            sub = np.concatenate([[0], np.flatnonzero(~same_contacts[1:]) + 1])
-            ws = self._contacts(t, *(np.take(x, sub, axis=0) for x in (pos, rot, vel, omega)))
-            w = self._arrays(bsz)
-            same = np.flatnonzero(same_contacts)
-            for key in ("force", "moment", "penetration", "load"):
-                w[key][sub] = ws[key]
-                w[key][same] = ws[key][0]
-        else:
-            w = self._contacts(t, pos, rot, vel, omega)
+        ``same_contacts`` (bool, (B,) or (B, 2)) marks states whose balls and races (per
+        race: whose balls and race k) equal those of state 0 (e.g. only the cage, or only
+        the inner race, perturbed): those ball–race contacts are copied from state 0
+        instead of recomputed."""
+        w = self._contacts(t, pos, rot, vel, omega, same_contacts)
         return self._finish(np.ascontiguousarray(pos), np.ascontiguousarray(rot), np.ascontiguousarray(vel),
                             np.ascontiguousarray(omega), w)
 
-    def _contacts(self, t, pos, rot, vel, omega):
+    def _contacts(self, t, pos, rot, vel, omega, same_contacts=None):
         """Ball–race contacts of B states into (and returns) the work arrays of size B."""
         con = self.con
         bsz = pos.shape[0]
@@ -398,14 +388,26 @@ class CompiledForces:
                      fixed_omega, w["ro"], w["rr"], w["rv"], w["rw"])
         # C-ordered copies: numba compiles one machine code per memory layout
         c, v, wb = (np.take(x, self.balls, axis=1) for x in (pos, vel, omega))
+        args = (c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
+                *self.physics, *self.tables, w["force"], w["moment"], w["penetration"], w["load"], self.lam_s,
+                self.kap_e)
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
         # OpenMP is missing, serves one caller at a time)
-        run = (kernels.race_contacts_parallel if bsz > 1 and threading.current_thread() is threading.main_thread()
-               else kernels.race_contacts)
-        run(c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
-            *self.physics, *self.tables, w["force"], w["moment"], w["penetration"],
-            w["load"], self.lam_s, self.kap_e)
+        if bsz == 1 or threading.current_thread() is not threading.main_thread():
+            kernels.race_contacts(*args)
+            return w
+        same = np.zeros((bsz, 2), dtype=bool)
+        if same_contacts is not None:
+            same[:] = np.asarray(same_contacts, dtype=bool).reshape(bsz, -1)
+        same[0] = False
+        z = c.shape[1]
+        todo = np.flatnonzero(np.repeat(~same, z, axis=1).ravel())
+        kernels.race_contacts_parallel(*args, todo)
+        if same.any():
+            b, k = np.nonzero(same)
+            for key in ("force", "moment", "penetration", "load"):
+                w[key][b, k] = w[key][0, k]
         return w
 
     def _finish(self, pos, rot, vel, omega, w):

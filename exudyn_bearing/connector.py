@@ -318,8 +318,8 @@ class BearingConnector:
         each contact (B, 2, Z; inner race first), and, from the numpy path, (kinematics,
         forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
         from the compiled path, which is used unless ``details`` are asked for).
-        ``same_contacts`` (compiled path): bool (B,), states whose ball–race contacts equal
-        state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`)."""
+        ``same_contacts`` (compiled path): bool (B,) or (B, 2), states (per race) whose
+        ball–race contacts equal state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`)."""
         if self._compiled is not None and not details:
             out, react, pen, load = self._compiled(t, pos, rot, vel, omega, same_contacts)
             parts = None
@@ -519,7 +519,8 @@ class BearingConnector:
                 return f"t = {t:.6g} s: non-finite {what} of {names.get(int(bad[0]), f'node slot {bad[0]}')}"
         return f"t = {t:.6g} s: non-finite state"
 
-    def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=1e-6):
+    def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=1e-4,
+                 eps_angular=1e-4):
         """Block finite-difference Jacobian for Exudyn's ``jacobianUserFunction``:
         -(f_q dF/dq + f_qt dF/dq_t), dense (6 n_nodes)².
 
@@ -533,6 +534,14 @@ class BearingConnector:
         states go through ONE batched evaluation (per-call overhead dominates at 32
         contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
         like the slots.
+
+        The velocity steps (``eps_velocity`` m/s, ``eps_angular`` rad/s) are secants over the
+        slip a Newton iteration moves, not tangents: the film's elastic knee (MODEL.md §6b)
+        is micrometres per second wide on lightly loaded contacts, and its tangent goes stale
+        within a step. Measured on the case matrix (0.02 s, docs/heavy_load_matrix.md): from
+        1e-6 to 1e-4 the Jacobian updates fall from 700 to 453 (deep groove, 1 kN radial) and
+        from 852 to 238 (spindle with radial load); 1e-3 makes the 2.5 kN deep-groove case cut
+        most of its steps.
         """
         pos, rot, vel, wl = self.decode(q, q_t)
         n6 = 6 * self.n_nodes
@@ -550,7 +559,8 @@ class BearingConnector:
             v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
             steps = compiled_glue.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl),
                                                   *spec["arrays"][:4],
-                                                  np.array([eps_position, eps_rotation, eps_velocity]), turn,
+                                                  np.array([eps_position, eps_rotation, eps_velocity, eps_angular]),
+                                                  turn,
                                                   p2, r2, v2, w2)
             out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"])
             jac = np.empty((n6, n6))
@@ -568,8 +578,8 @@ class BearingConnector:
                 steps[i - 1] = eps_rotation
                 r2[i, group] = r2[i, group] @ turn[k - 3]
             else:
-                steps[i - 1] = eps_velocity
-                (v2 if k < 3 else w2)[i, group, k % 3] += eps_velocity
+                steps[i - 1] = eps_velocity if k < 3 else eps_angular
+                (v2 if k < 3 else w2)[i, group, k % 3] += steps[i - 1]
         out, react, _, _, _ = self._batch_forces(t, p2, r2, v2, np.einsum("bnij,bnj->bni", r2, w2),
                                                  same_contacts=spec["same"])
         d_out = (out[1:] - out[0]) / steps[:, None, None]
@@ -609,10 +619,14 @@ class BearingConnector:
         for gi, group in enumerate(groups):
             mask[gi, group] = True
         block = np.array([int(group[0]) in ball_slots and not coupled for group in groups])
-        # a perturbed cage moves no ball and no race: its states reuse the base contacts
-        # (the Crook quadrature is most of an evaluation; 12 of ~31 states here)
-        cage_slot = self.layout["cage"]
-        same = np.array([False] + [cage_slot is not None and int(group[0]) == cage_slot for _, group, _, _ in columns])
+        # a perturbed cage moves no ball and no race: its states reuse the base contacts, and
+        # a perturbed race changes its own contacts only (the Crook quadrature is most of an
+        # evaluation; of ~31 states here 12 are the cage's and ~12 a race's)
+        def unchanged(slot):  # per race: a slot that is not that race's node leaves its contacts alone
+            return [slot != self.layout["inner"], slot != self.layout["outer"]]
+
+        same = np.array([[False, False]] + [unchanged(int(group[0])) if int(group[0]) not in ball_slots
+                                            else [False, False] for _, group, _, _ in columns])
         arrays = (np.array([c[0] for c in columns], dtype=np.int64), np.array([c[2] for c in columns], dtype=np.int64),
                   np.array([c[3] == "v" for c in columns], dtype=np.bool_), mask, block,
                   np.array([int(g[0]) for g in groups], dtype=np.int64), balls.astype(np.int64),
