@@ -21,5 +21,6 @@ from .connector import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM
 from .quasistatic import LoadDistribution, QuasiStaticError, solve_load_distribution
 from .runner import BearingSimulationError, SolverSettings, run_solver, simulate
+from .steady import SteadyState, gyroscopic_minimum_axial, steady_state
 
 __version__ = "0.1.0"

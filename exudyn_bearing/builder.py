@@ -49,6 +49,8 @@ class BearingHandle:
     connector: BearingConnector = field(repr=False)
     nodeNumbers: list = field(repr=False, default_factory=list)
     initialLoads: object = field(repr=False, default=None)
+    #: the :class:`~exudyn_bearing.steady.SteadyState` the run starts from, or None (pure-rolling start)
+    initialSteadyState: object = field(repr=False, default=None)
 
     def States(self, mbs):
         """Recorded (t, q, q_t) of the bearing's nodes: absolute coordinates, shape
@@ -127,8 +129,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
                                 contactLaw: ContactLaw = ContactLaw(), cage: CageModel = CageModel(),
                                 ballDrag: BallDrag | None = REFERENCE_DRAG, innerRaceDisplacement=None,
-                                initialControl: str = "auto", recordStates: bool = True,
-                                show: bool = True) -> BearingHandle:
+                                initialControl: str = "auto", initialState: str = "auto",
+                                recordStates: bool = True, show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
     connector) to ``mbs`` and return its :class:`BearingHandle`.
 
@@ -162,6 +164,14 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         Raceway control (Jones) that sets each ball's initial spin axis: 'auto' takes the
         contact with the larger Newtonian spin resistance (with ball drag the balls settle
         there; e.g. the inner race at 1.3 kN for the reference bearing), or force one.
+    initialState : {'auto', 'steady', 'rolling'}
+        'steady': every ball, the cage and the inner race start in the steady rolling state
+        of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
+        the balance of traction, spin, drag, centrifugal and gyroscopic forces, MODEL.md
+        §12), so a run does not spend seconds of simulated time settling. 'rolling': the
+        quasi-static position with pure-rolling speeds (see Notes). 'auto' (default):
+        'steady' where it applies (axial force only, ``Driven``/``Free`` inner race, no
+        ``innerRaceDisplacement``, the steady solve converged), else 'rolling'.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
@@ -243,6 +253,19 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     beta = _control_axis(bearing, lubricant, loads, w_i, w_o, initialControl)
     spin_axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * e_z
     w_c, spin = rolling_cage_speed(c_loc, spin_axis, p_in, p_out, w_i, w_o, return_spin=True)
+    omega_loc = spin[:, None] * spin_axis
+    steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
+                           sense=sense, inner=inner, axial_varies=callable(axialForce) or callable(radialForce),
+                           displaced=innerRaceDisplacement is not None, contactLaw=contactLaw, ballDrag=ballDrag)
+    if steady is not None:
+        e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
+        c_loc = steady.ball_orbit_radius * e_r + steady.ball_axial_position * e_z
+        w_c = np.full(z, sense * steady.cage_speed)
+        # a reversed bearing is the mirror image in the meridional plane: the pseudovector
+        # keeps its circumferential component and flips the others
+        w_b = np.asarray(steady.ball_omega) * np.array([sense, 1.0, sense])
+        omega_loc = w_b[0] * e_r + w_b[1] * e_psi + w_b[2] * e_z
+        relative[:3] = (0.0, 0.0, steady.inner_race_shift)
 
     # -- bodies -----------------------------------------------------------------------
     node_type = exu.NodeType.RotationRotationVector
@@ -254,7 +277,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         v = frame @ (w_c[j] * np.cross(e_z, c_loc[j]))
         d = mbs.CreateRigidBody(inertia=InertiaSphere(mass=bearing.ball_mass, radius=bearing.ball_radius),
                                 referencePosition=c, initialVelocity=v,
-                                initialAngularVelocity=frame @ (spin[j] * spin_axis[j]),
+                                initialAngularVelocity=frame @ omega_loc[j],
                                 nodeType=node_type, graphicsDataList=ball_graphics, returnDict=True)
         ball_bodies.append(d["bodyNumber"])
         ball_nodes.append(d["nodeNumber"])
@@ -327,7 +350,35 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         sensor = mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
-                         connector, nodes, loads)
+                         connector, nodes, loads, steady)
+
+
+def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, axial_varies,
+                  displaced, contactLaw, ballDrag):
+    """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
+    pure-rolling start ('rolling', or 'auto' where the steady state does not apply)."""
+    if initial_state not in ("auto", "steady", "rolling"):
+        raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
+    if initial_state == "rolling":
+        return None
+    why = None
+    if radial != 0 or axial <= 0:
+        why = "it needs an axial force alone (radial = 0, axial > 0)"
+    elif inner.kind not in ("driven", "free") or displaced:
+        why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
+    elif rpm_i == sense * rpm_o:
+        why = "the races turn at the same speed"
+    if why is None:
+        from .steady import steady_state
+
+        state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
+                             drag=ballDrag, contact_law=contactLaw)
+        if state.converged:
+            return state
+        why = state.message
+    if initial_state == "steady":
+        raise ValueError(f"initialState: no steady start here, {why}; use initialState='rolling'")
+    return None
 
 
 def _spin_resistance(bearing, lubricant, load, angle, race, speed):

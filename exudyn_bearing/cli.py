@@ -95,6 +95,39 @@ def _simulate(args) -> int:
     return 0
 
 
+def _steady(args) -> int:
+    from contact.ballrace import ContactLaw
+    from .skidmap import hirano_minimum_axial
+    from .steady import gyroscopic_minimum_axial, steady_state
+
+    setup = _setup(args.bearing)
+    state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
+                         drag=None if args.no_drag else setup.drag, contact_law=ContactLaw(traction=args.traction))
+    data = state.to_dict()
+    data["hirano_minimum_axial_N"] = hirano_minimum_axial(setup.bearing, args.rpm)
+    data["gyroscopic_minimum_axial_N"] = gyroscopic_minimum_axial(
+        setup.bearing, args.rpm, traction_coefficient=setup.lubricant.limiting_shear_coefficient or 0.047)
+    if args.json:
+        json.dump(data, sys.stdout, indent=1)
+        print()
+        return 0 if state.converged else 1
+    print(f"Steady rolling state (MODEL.md §12): axial {args.axial:g} N, inner race {args.rpm:g} rpm"
+          f"{', no drag' if args.no_drag else ''}")
+    if not state.converged:
+        print(f"  NOT CONVERGED: {state.message}")
+    print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %")
+    print(f"  cage slip (P19, nominal angle)      {state.cage_slip_percent:8.3f} %")
+    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
+    print(f"  ball attitude xz / yz               {state.attitude_xz_deg:8.3f} / {state.attitude_yz_deg:.3f} deg")
+    print(f"  inner / outer load                  {state.inner_load:8.2f} / {state.outer_load:.2f} N")
+    print(f"  inner / outer contact angle         {state.inner_contact_angle_deg:8.2f} / "
+          f"{state.outer_contact_angle_deg:.2f} deg")
+    print(f"  minimum axial load: Hirano {data['hirano_minimum_axial_N']:.0f} N, Jones' gyroscopic criterion "
+          f"{data['gyroscopic_minimum_axial_N']:.0f} N")
+    print(f"  wall time {state.wall_time_s:.2f} s")
+    return 0 if state.converged else 1
+
+
 def _skid_map(args) -> int:
     from . import skidmap
 
@@ -114,7 +147,7 @@ def _skid_map(args) -> int:
                               radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
                               time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
                               progress=lambda line: print(line, flush=True),
-                              contact_law=ContactLaw(traction=args.traction))
+                              contact_law=ContactLaw(traction=args.traction), refine=not args.no_refine)
     print(result.markdown())
     print(f"wrote {args.out}/skid_map.csv, skid_map.md, thresholds.json, skid_map.png")
     return 0
@@ -173,6 +206,14 @@ def build_parser() -> argparse.ArgumentParser:
                    help="repeat at half the step and report the differences as an error estimate")
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
     p.set_defaults(func=_simulate)
+    p = sub.add_parser("steady", help="steady rolling state under pure axial load, no time integration (MODEL.md §12)")
+    p.add_argument("--axial", type=float, required=True, help="axial force on the inner race, N")
+    p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
+    p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
+    _traction_option(p)
+    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(func=_steady)
     p = sub.add_parser("render", help="render a run to PNG frames (headless: Xvfb/OpenGL or the raytracer)")
     p.add_argument("--axial", type=float, default=1300.0, help="axial force on the inner race, N")
     p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
@@ -197,6 +238,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default="out/skid_map", help="output directory (resumes what it finds there)")
     p.add_argument("--workers", type=int, default=None, help="local worker processes (default: CPU count)")
     p.add_argument("--scheduler", help="Dask scheduler address (runs the grid on that cluster)")
+    p.add_argument("--no-refine", action="store_true",
+                   help="skip the thresholds' steady-state refinement and its dynamic confirmation")
     _traction_option(p)
     p.set_defaults(func=_skid_map)
     return parser

@@ -248,7 +248,8 @@ class SimulationSummary:
 def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT, *, axial: float = 1300.0,
              radial: float = 0.0, rpm: float = 1800.0, time: float = 0.05, settings: SolverSettings = SolverSettings(),
              drag: BallDrag | None = REFERENCE_DRAG, contact_law: ContactLaw = ContactLaw(),
-             cage: CageModel = CageModel(), error_estimate: bool = False) -> SimulationSummary:
+             cage: CageModel = CageModel(), error_estimate: bool = False,
+             initial_state: str = "auto") -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
 
@@ -256,6 +257,8 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     for DOPRI5) and ``error_estimate`` holds, per summary quantity, the difference
     |x(h) - x(h/2)|: for these second-order (or adaptive) solvers a Richardson-type
     estimate of the error of the reported run (its error is ~4/3 of it at order 2).
+    ``initial_state``: ``CreateAngularContactBearing(initialState=...)`` — 'auto' starts a
+    pure axial load from its steady rolling state (MODEL.md §12).
     """
     import exudyn as exu
 
@@ -268,7 +271,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     mbs = sc.AddSystem()
     handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=Fixed(),
                                          axialForce=axial, radialForce=radial, contactLaw=contact_law, cage=cage,
-                                         ballDrag=drag, show=False)
+                                         ballDrag=drag, initialState=initial_state, show=False)
     mbs.Assemble()
     info = run_solver(mbs, [handle], time, settings)
     results = handle.Results(mbs)
@@ -279,7 +282,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                         relative_tolerance=0.5 * settings.relative_tolerance,
                         absolute_tolerance=0.5 * settings.absolute_tolerance)
         ref = simulate(bearing, lubricant, axial=axial, radial=radial, rpm=rpm, time=time, settings=finer, drag=drag,
-                       contact_law=contact_law, cage=cage)
+                       contact_law=contact_law, cage=cage, initial_state=initial_state)
         keys = ("cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
                 "max_inner_slip")
         other = ref.details | {k: getattr(ref, k) for k in ("cage_slip_percent", "kinematic_cage_slip_percent",

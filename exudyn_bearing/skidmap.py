@@ -66,6 +66,8 @@ class SkidPoint:
     cage_slip_percent: float | None = None
     kinematic_cage_slip_percent: float | None = None
     peak_ball_slip: float | None = None  #: largest ball–race slip speed over the last third, m/s
+    #: the steady-state solver's kinematic cage slip (pure axial load only, MODEL.md §12), %
+    steady_kinematic_cage_slip_percent: float | None = None
     settled: bool | None = None
     wall_time_s: float | None = None
     error: str | None = None
@@ -87,9 +89,16 @@ def _run_point(args) -> dict:
         res = s.results
         last = res.last(1 / 3)
         peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))
+        steady = None
+        if point.radial == 0:
+            from .steady import steady_state
+
+            state = steady_state(bearing, lubricant, axial=point.axial, rpm=point.rpm, drag=drag,
+                                 contact_law=law[0] if law else ContactLaw())
+            steady = state.kinematic_cage_slip_percent if state.converged else None
         done = replace(point, cage_slip_percent=s.cage_slip_percent,
                        kinematic_cage_slip_percent=s.kinematic_cage_slip_percent, peak_ball_slip=peak,
-                       settled=s.settled)
+                       settled=s.settled, steady_kinematic_cage_slip_percent=steady)
     except Exception as err:  # a failed point is reported, the map goes on
         done = replace(point, error=f"{type(err).__name__}: {err}".splitlines()[0][:300])
     done.wall_time_s = _time.perf_counter() - start
@@ -102,6 +111,8 @@ class SkidMap:
 
     bearing: Bearing
     points: list = field(default_factory=list)
+    #: :meth:`refine_thresholds` of the finished map (set by :func:`skid_map`), or None
+    refined: list | None = None
 
     def thresholds(self, level: float = 1.0) -> list[dict]:
         """Per (rpm, radial): the smallest axial load with kinematic cage slip below
@@ -126,6 +137,55 @@ class SkidMap:
                             hirano_minimum_axial=hirano_minimum_axial(self.bearing, rpm)))
         return out
 
+    def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, drag: BallDrag | None = REFERENCE_DRAG,
+                          contact_law: ContactLaw = ContactLaw(), level: float = 1.0,
+                          tolerance: float = 0.04, confirm_time: float | None = 0.1) -> list[dict]:
+        """:meth:`thresholds`, refined where the steady-state solver applies (radial 0):
+        the load at which the steady kinematic cage slip crosses ``level`` %, bisected
+        between the bracketing grid loads until the bracket is ``tolerance`` of its load
+        wide (the midpoint then within ±tolerance/2, MODEL.md §12). Each refined entry gets
+        ``bracket`` (N) and, with ``confirm_time`` (s), dynamic runs of that length at both
+        ends of the bracket and whether their slips lie on the two sides of the level
+        (``dynamic_slips``, ``dynamic_confirms``)."""
+        from .steady import steady_state
+
+        out = []
+        for entry in self.thresholds(level):
+            pts = sorted((p for p in self.points if p.rpm == entry["rpm"] and p.radial == entry["radial"]
+                          and p.error is None), key=lambda p: p.axial)
+            bracket = next(((lo, hi) for lo, hi in zip(pts, pts[1:]) if lo.kinematic_cage_slip_percent >= level
+                            > hi.kinematic_cage_slip_percent), None)
+            if entry["radial"] != 0 or bracket is None:
+                out.append(entry)
+                continue
+
+            def slip(axial):
+                state = steady_state(self.bearing, lubricant, axial=axial, rpm=entry["rpm"], drag=drag,
+                                     contact_law=contact_law)
+                return state.kinematic_cage_slip_percent if state.converged else None
+
+            lo, hi = bracket[0].axial, bracket[1].axial
+            s_lo, s_hi = slip(lo), slip(hi)
+            if s_lo is None or s_hi is None or not (s_lo >= level > s_hi):
+                out.append(dict(entry, note=entry["note"] + "; the steady state does not bracket it"))
+                continue
+            while hi - lo > tolerance * lo:
+                mid = 0.5 * (lo + hi)
+                s_mid = slip(mid)
+                if s_mid is None:
+                    break
+                lo, hi = (mid, hi) if s_mid >= level else (lo, mid)
+            refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi],
+                           note=f"steady-state bisection to ±{100 * tolerance / 2:g} %")
+            if confirm_time:
+                from .runner import simulate
+
+                dyn = [simulate(self.bearing, lubricant, axial=a, rpm=entry["rpm"], time=confirm_time, drag=drag,
+                                contact_law=contact_law).kinematic_cage_slip_percent for a in (lo, hi)]
+                refined.update(dynamic_slips=dyn, dynamic_confirms=bool(dyn[0] >= level > dyn[1]))
+            out.append(refined)
+        return out
+
     def write(self, out: Path) -> None:
         """CSV, markdown and thresholds JSON (and a PNG with matplotlib)."""
         out = Path(out)
@@ -138,23 +198,31 @@ class SkidMap:
             for p in rows:
                 writer.writerow([getattr(p, n) for n in names])
         (out / "skid_map.md").write_text(self.markdown() + "\n")
-        (out / "thresholds.json").write_text(json.dumps(self.thresholds(), indent=1))
+        (out / "thresholds.json").write_text(json.dumps(self.refined or self.thresholds(), indent=1))
         self.plot(out / "skid_map.png")
 
     def markdown(self) -> str:
-        lines = ["| rpm | F_r (N) | F_a (N) | kinematic_cage_slip_percent | cage slip P19 (%) | peak ball slip (m/s) | settled | note |",
-                 "|---:|---:|---:|---:|---:|---:|:---:|---|"]
+        lines = ["| rpm | F_r (N) | F_a (N) | kinematic cage slip (%) | steady state (%) | cage slip P19 (%) | "
+                 "peak ball slip (m/s) | settled | note |",
+                 "|---:|---:|---:|---:|---:|---:|---:|:---:|---|"]
         for p in sorted(self.points, key=lambda p: (p.rpm, p.radial, p.axial)):
             if p.error:
-                lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | – | – | – | – | failed: {p.error} |")
+                lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | – | – | – | – | – | failed: {p.error} |")
             else:
+                steady = p.steady_kinematic_cage_slip_percent
                 lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | {p.kinematic_cage_slip_percent:.3f} | "
-                             f"{p.cage_slip_percent:.3f} | {p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | |")
-        lines += ["", "| rpm | F_r (N) | min. F_a for kinematic slip < 1 % (N) | how | Hirano 10 Z F_c (N) |",
-                  "|---:|---:|---:|---|---:|"]
-        for t in self.thresholds():
+                             f"{'–' if steady is None else f'{steady:.3f}'} | {p.cage_slip_percent:.3f} | "
+                             f"{p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | |")
+        lines += ["", "| rpm | F_r (N) | min. F_a for kinematic slip < 1 % (N) | bracket (N) | how | "
+                      "dynamic at the bracket (%) | Hirano 10 Z F_c (N) |",
+                  "|---:|---:|---:|---|---|---|---:|"]
+        for t in self.refined or self.thresholds():
             est = f"{t['minimum_axial']:.0f}" if t["minimum_axial"] is not None else "–"
-            lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {t['note']} | {t['hirano_minimum_axial']:.0f} |")
+            bracket = "{:.0f}–{:.0f}".format(*t["bracket"]) if "bracket" in t else "–"
+            dyn = ("{:.3f} / {:.3f}".format(*t["dynamic_slips"]) + ("" if t["dynamic_confirms"] else " (NOT confirmed)")
+                   if "dynamic_slips" in t else "–")
+            lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {bracket} | {t['note']} | {dyn} | "
+                         f"{t['hirano_minimum_axial']:.0f} |")
         return "\n".join(lines)
 
     def plot(self, path) -> bool:
@@ -248,7 +316,7 @@ def _one_thread_per_worker():
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
              axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float = DEFAULT_TIME,
              drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
-             progress=print, contact_law: ContactLaw = ContactLaw()) -> SkidMap:
+             progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) for
     ``time`` s each and return a :class:`SkidMap`.
 
@@ -268,6 +336,9 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         §6a). A resumed map reuses the points in ``out`` only if they came from the same
         bearing, lubricant, drag, law and package version (``out/inputs.json``); otherwise
         a ValueError.
+    refine : bool
+        After the grid, refine each pure-axial threshold with the steady-state solver and
+        confirm its bracket dynamically (:meth:`SkidMap.refine_thresholds`).
     """
     grid = [SkidPoint(float(a), float(r), float(n), float(time)) for n, r, a in itertools.product(rpm, radial, axial)]
     if not grid:
@@ -320,6 +391,14 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
                     record(fut.result())
     order = {p.key: i for i, p in enumerate(grid)}
     result.points.sort(key=lambda p: order[p.key])
+    if refine:
+        result.refined = result.refine_thresholds(lubricant, drag, contact_law)
+        if progress:
+            for t in result.refined:
+                if "bracket" in t:
+                    progress(f"threshold at {t['rpm']:g} rpm: {t['minimum_axial']:.0f} N (bracket "
+                             f"{t['bracket'][0]:.0f}–{t['bracket'][1]:.0f} N, dynamic "
+                             f"{'confirms' if t.get('dynamic_confirms') else 'does NOT confirm'} it)")
     if out is not None:
         result.write(Path(out))
     return result

@@ -238,11 +238,11 @@ def _read_csv(path):
 
 
 def _markdown_point_rows(text):
-    """Data rows of the first (per-point) table: 8 columns."""
+    """Data rows of the first (per-point) table: 9 columns."""
     rows = []
     for line in text.splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) == 8 and re.fullmatch(r"[\d.]+", cells[0]):
+        if len(cells) == 9 and re.fullmatch(r"[\d.]+", cells[0]):
             rows.append(cells)
     return rows
 
@@ -274,17 +274,27 @@ def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
     for cells in md_rows:
         r = by_load[float(cells[2])]
         assert float(cells[3]) == pytest.approx(float(r["kinematic_cage_slip_percent"]), abs=6e-4)
-        assert float(cells[4]) == pytest.approx(float(r["cage_slip_percent"]), abs=6e-4)
-        assert cells[6] == "no"
-    # thresholds: Hirano 10 Z m r_p w_c^2 and the 1 % crossing interpolated between the points
+        assert float(cells[4]) == pytest.approx(float(r["steady_kinematic_cage_slip_percent"]), abs=6e-4)
+        assert float(cells[5]) == pytest.approx(float(r["cage_slip_percent"]), abs=6e-4)
+        assert cells[7] == "no"
+        # each run starts from the steady state and stays on it (MODEL.md §12)
+        assert float(r["kinematic_cage_slip_percent"]) == pytest.approx(float(r["steady_kinematic_cage_slip_percent"]),
+                                                                        abs=0.05)
+    # thresholds: Hirano 10 Z m r_p w_c^2, and the 1 % crossing bisected with the steady
+    # state between the bracketing points, confirmed by dynamic runs at the final bracket
     (threshold,) = json.loads((out / "thresholds.json").read_text())
     assert threshold["rpm"] == 1800.0
     w_c = nominal_cage_speed(1800, D_REF, DM_REF, ALPHA_REF)
     assert threshold["hirano_minimum_axial"] == pytest.approx(10 * Z_REF * MASS_REF * DM_REF / 2 * w_c ** 2, rel=1e-6)
     assert slip[1300.0] > 1.0 > slip[3000.0]  # the crossing lies between them
-    crossing = 1300 + (slip[1300.0] - 1.0) * (3000 - 1300) / (slip[1300.0] - slip[3000.0])
-    assert threshold["minimum_axial"] == pytest.approx(crossing, rel=1e-9)
-    assert "unsettled" in threshold["note"]
+    lo, hi = threshold["bracket"]
+    assert 1300 <= lo < threshold["minimum_axial"] < hi <= 3000 and hi - lo <= 0.04 * lo + 1e-9
+    from exudyn_bearing import steady_state
+
+    assert steady_state(axial=lo, rpm=1800).kinematic_cage_slip_percent >= 1.0
+    assert steady_state(axial=hi, rpm=1800).kinematic_cage_slip_percent < 1.0
+    assert threshold["dynamic_confirms"] and threshold["dynamic_slips"][0] >= 1.0 > threshold["dynamic_slips"][1]
+    assert "bisection" in threshold["note"]
     assert_real_png(out / "skid_map.png")
 
     # the same command again: nothing is recomputed, the journal and the table stay as they were

@@ -205,7 +205,7 @@ def test_traction_pulls_sliding_balls_towards_rolling():
     # brings the balls back within the 3 ms (the capped default needs longer)
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
                                          axialForce=1300.0, ballDrag=None, contactLaw=ContactLaw(traction="crook"),
-                                         show=False)
+                                         initialState="rolling", show=False)
     perturbed = {0: 1.08, 8: 0.92}
     reference = [4, 12]  # unperturbed balls (pure axial load: all balls are equivalent)
     for ball, factor in perturbed.items():
@@ -258,7 +258,7 @@ def test_kinematic_cage_slip_zero_without_drag(axial):
     """
     _, mbs = _new_system()
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
-                                         axialForce=axial, ballDrag=None, initialControl="outer",
+                                         axialForce=axial, ballDrag=None, initialControl="outer", initialState="rolling",
                                          contactLaw=ContactLaw(traction="crook", quadrature_order=8), show=False)
     mbs.Assemble()
     run_solver(mbs, [handle], 0.012, SolverSettings(solver="generalized-alpha", step=1e-4, output_step=5e-4))
@@ -297,7 +297,7 @@ def test_light_load_without_drag_pivots_gyroscopically():
     slip 10.4 % (3 kN: ratio 0.23, slip -0.002 %)."""
     _, mbs = _new_system()
     handle = CreateAngularContactBearing(mbs, BRG, REFERENCE_LUBRICANT, innerRace=races.Driven(1800.0),
-                                         axialForce=200.0, ballDrag=None, show=False)
+                                         axialForce=200.0, ballDrag=None, initialState="rolling", show=False)
     mbs.Assemble()
     run_solver(mbs, [handle], 0.02, SolverSettings(output_step=5e-4))
     res = handle.Results(mbs)

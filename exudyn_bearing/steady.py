@@ -1,0 +1,295 @@
+"""Steady rolling state of a bearing under pure axial load (quasi-dynamic, MODEL.md §12).
+
+Under an axisymmetric load all balls behave alike and the cage carries no torque, so every
+pocket force vanishes and one ball describes the bearing. In the frame that orbits with the
+ball at the cage speed w_c its centre c = (r_c, 0, z_c) is at rest and its absolute angular
+velocity w_b is constant, so (MODEL.md §1–§3, §6, §8)
+
+    force on the ball:   F_inner + F_outer + F_drag = -m r_c w_c² e_r
+    moment about c:      M_inner + M_outer = I w_c e_z × w_b          (sphere, I = 2/5 m r²)
+    inner race, axial:   Z (F_inner · e_z) = F_a
+
+— seven equations in (w_c, w_b, r_c, z_c, axial shift of the inner race). The contact
+forces are those of the dynamic model: :func:`contact.kinematics.ball_race_kinematics` and
+:func:`contact.ballrace.ball_race_forces` with the same :class:`~contact.ballrace.ContactLaw`
+(its fast traction rule), so a settled dynamic run and this balance describe the same
+physics; only the integration is gone.
+"""
+from __future__ import annotations
+
+import math
+import time as _time
+from dataclasses import asdict, dataclass, replace
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from contact import cage as cage_physics
+from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
+from contact.kinematics import ball_race_kinematics, rolling_cage_speed
+from contact.lubricant import Lubricant
+from .bearing import BallDrag, Bearing
+from .outputs import cage_slip
+from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .quasistatic import solve_load_distribution
+
+__all__ = ["SteadyState", "steady_state", "gyroscopic_minimum_axial"]
+
+MICRON = 1e-6
+_E_Z = np.array([0.0, 0.0, 1.0])
+
+
+@dataclass(frozen=True)
+class SteadyState:
+    """Result of :func:`steady_state` (SI units; angles in degrees where the name says so)."""
+
+    axial: float  #: applied axial load F_a, N
+    rpm: float  #: inner-race speed, rev/min
+    kinematic_cage_slip_percent: float  #: (w_kin - w_c) / mean, % (MODEL.md §7)
+    cage_slip_percent: float  #: against the nominal pure-rolling cage speed (P19), %
+    cage_speed: float  #: w_c, rad/s
+    kinematic_cage_speed: float  #: pure-rolling orbital speed for the ball's spin axis, rad/s
+    nominal_cage_speed: float  #: P19 with the free contact angle, rad/s
+    attitude_xz_deg: float  #: asin(|w_radial| / |w_b|), deg (MODEL.md §7)
+    attitude_yz_deg: float  #: asin(|w_circumferential| / |w_b|), deg
+    ball_omega: tuple  #: absolute ball angular velocity (radial, circumferential, axial), rad/s
+    inner_load: float  #: Q_i, N
+    outer_load: float  #: Q_o, N
+    inner_contact_angle_deg: float
+    outer_contact_angle_deg: float
+    inner_max_pressure: float  #: p_max, Pa
+    outer_max_pressure: float  #: Pa
+    inner_race_shift: float  #: axial displacement of the inner race, m
+    ball_orbit_radius: float  #: r_c of the ball centres, m
+    ball_axial_position: float  #: z_c of the ball centres, m
+    residual: float  #: largest scaled equation residual (force / (F_a/Z sin a0))
+    converged: bool
+    message: str
+    wall_time_s: float
+
+    def to_dict(self) -> dict:
+        data = asdict(self)
+        data["ball_omega"] = list(self.ball_omega)
+        return data
+
+
+class _OneBall:
+    """The balance equations of one ball at azimuth 0 (x radial, y circumferential, z axial)."""
+
+    def __init__(self, bearing, lubricant, axial, w_i, w_o, drag, law):
+        self.b, self.lub, self.law = bearing, lubricant, law
+        self.axial, self.w_i, self.w_o = axial, w_i, w_o
+        (self.r_gi, self.z_gi), (self.r_go, self.z_go) = bearing.groove_centres()
+        d = bearing.ball_diameter
+        self.tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
+        # inner contact first, then outer: one vectorized evaluation of both
+        self.grooves = tuple(np.array(v) for v in zip((self.r_gi, self.z_gi, self.tube[0]),
+                                                       (self.r_go, self.z_go, self.tube[1])))
+        self.signs = np.array([-1.0, 1.0])
+        self.params = RaceContact(d, bearing.pitch_diameter, np.array([bearing.inner_conformity,
+                                                                      bearing.outer_conformity]),
+                                  self.signs, bearing.effective_modulus, bearing.ball_mass)
+        self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
+        self.c_d = 0.0 if drag is None else drag.drag_coefficient
+        self.inertia = 0.4 * bearing.ball_mass * bearing.ball_radius ** 2
+        self.force_scale = max(axial, 1e-3) / (bearing.balls * math.sin(bearing.contact_angle))
+        # unknowns scaled to O(1): speeds by the nominal cage / ball spin speeds, lengths in um
+        w_nom = abs(bearing.cage_speed(w_i, w_o)) or 1.0
+        self.scale = np.array([w_nom, *[abs(w_i - w_o) * bearing.pitch_diameter / d / 2 or 1.0] * 3,
+                               MICRON, MICRON, MICRON])
+
+    def bounds(self):
+        """Bounds of the scaled unknowns: the cage between the race speeds, ball spin within
+        three times its pure-rolling scale (beyond, the film thickens without bound and
+        the traction of a runaway spin tends to zero: a spurious root at infinity),
+        positions within the groove play."""
+        w = sorted((self.w_i, self.w_o))
+        play = 1e6 * (self.tube[0] + self.tube[1])  # um
+        lo = np.array([w[0] / self.scale[0] - 1e-3, -3.0, -3.0, -3.0, -play, -play, -play])
+        hi = np.array([w[1] / self.scale[0] + 1e-3, 3.0, 3.0, 3.0, play, play, play])
+        return lo, hi
+
+    def unpack(self, x):
+        x = x * self.scale
+        return x[0], x[1:4], np.array([self.b.pitch_radius + x[4], 0.0, x[5]]), x[6]
+
+    def contacts(self, x):
+        """(kinematics, forces) of the inner (index 0) and outer (1) contact at the unknowns ``x``."""
+        w_c, w_b, c, shift = self.unpack(x)
+        both = np.stack([c, c])
+        v = np.array([[0.0, w_c * c[0], 0.0]] * 2)
+        origin = np.array([[0.0, 0.0, shift], [0.0, 0.0, 0.0]])
+        w_r = np.array([self.w_i * _E_Z, self.w_o * _E_Z])
+        kin = ball_race_kinematics(both, v, np.stack([w_b, w_b]), origin, np.eye(3), np.zeros(3), w_r,
+                                   self.grooves, self.b.ball_radius, self.signs)
+        return kin, ball_race_forces(kin, self.params, self.lub, self.law)
+
+    def residual(self, x):
+        w_c, w_b, c, _ = self.unpack(x)
+        _, f = self.contacts(x)
+        force = f.force[0] + f.force[1] + self.b.ball_mass * c[0] * w_c ** 2 * np.array([1.0, 0.0, 0.0])
+        if self.density > 0:
+            force += cage_physics.drag_forces(c[None], np.array([[0.0, w_c * c[0], 0.0]]), _E_Z, np.zeros(3),
+                                              self.c_d, self.density, self.b.ball_radius)[0]
+        gyro = self.inertia * w_c * np.cross(_E_Z, w_b)
+        moment = f.moment[0] + f.moment[1] - gyro
+        axial = f.force[0, 2] - self.axial / self.b.balls
+        s = self.force_scale
+        return np.concatenate([force / s, moment / (s * self.b.ball_radius), [axial / s]])
+
+
+def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
+                 axial: float, rpm: float, outer_rpm: float = 0.0, drag: BallDrag | None = REFERENCE_DRAG,
+                 contact_law: ContactLaw = ContactLaw(), tol: float = 1e-8) -> SteadyState:
+    """Steady rolling state under pure axial load (MODEL.md §12).
+
+    Parameters
+    ----------
+    bearing, lubricant
+        As for :func:`exudyn_bearing.simulate`.
+    axial : float
+        Axial load on the inner race, N (> 0).
+    rpm, outer_rpm : float
+        Inner- and outer-race speeds, rev/min.
+    drag : BallDrag or None
+        Ball drag (MODEL.md §8); None: none.
+    contact_law : ContactLaw
+        Ball–race physics, as in the dynamic model.
+    tol : float
+        Largest scaled residual accepted (forces relative to F_a / (Z sin a0)).
+
+    Returns
+    -------
+    SteadyState
+        ``converged`` False (with ``message``) where no steady state was found — e.g. a
+        limit cycle, where the dynamic model does not settle either; the numbers are then
+        those of the best iterate and must not be used as a result.
+
+    Raises
+    ------
+    ValueError
+        Non-finite or non-positive ``axial``, non-finite speeds.
+    """
+    start = _time.perf_counter()
+    for name, value in (("axial", axial), ("rpm", rpm), ("outer_rpm", outer_rpm)):
+        if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value!r}")
+    if axial <= 0:
+        raise ValueError(f"axial must be positive (the steady state is for an axially loaded bearing), got {axial!r}")
+    if rpm == outer_rpm:
+        raise ValueError("rpm, outer_rpm: the races turn at the same speed; nothing rolls")
+    w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    # the accurate traction rule: the fast rule's ray switching is not smooth enough for a
+    # root finder to converge below ~1e-3, while the two rules agree within 1e-2 (MODEL.md §6)
+    law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
+    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law)
+    x = _start(bearing, ball, axial, rpm, outer_rpm)
+    lo, hi = ball.bounds()
+    sol = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14, method="trf",
+                        bounds=(lo, hi), max_nfev=2000)
+    worst = float(np.max(np.abs(sol.fun)))
+    converged = bool(worst <= tol) and not np.any(sol.active_mask != 0)  # a root on a bound is no root
+    message = "converged" if converged else (
+        f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
+        "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")
+    return _result(bearing, ball, sol.x, axial, rpm, w_i, w_o, worst, converged, message,
+                   _time.perf_counter() - start)
+
+
+def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2):
+    """Pure rolling about the free-angle axis at the quasi-static position; then, in turn,
+    the speeds balanced with the position held and the position balanced (normal forces
+    only) against the centrifugal force of the current cage speed, until the cage speed
+    changes by less than ``tol`` (relative). Near gross sliding a joint solve from pure
+    rolling can land on the wrong branch; this continuation does not."""
+    loads = solve_load_distribution(bearing, axial=axial, rpm=rpm, outer_rpm=outer_rpm)
+    a0 = bearing.contact_angle
+    e = np.array([-math.sin(a0), 0.0, math.cos(a0)])
+    c = np.array([bearing.pitch_radius + loads.ball_radius_offset[0], 0.0, loads.ball_axial_offset[0]])
+    a_i, a_o = loads.inner_contact_angle[0], loads.outer_contact_angle[0]
+    r = bearing.ball_radius
+    p_in = c - r * np.array([math.cos(a_i), 0.0, math.sin(a_i)])
+    p_out = c + r * np.array([math.cos(a_o), 0.0, math.sin(a_o)])
+    w_c, spin = rolling_cage_speed(c[None], e[None], p_in[None], p_out[None], ball.w_i, ball.w_o, return_spin=True)
+    x = np.zeros(7)
+    x[0], x[1:4] = w_c[0], spin[0] * e
+    x[:4] /= ball.scale[:4]
+    x[4:] = np.array([loads.ball_radius_offset[0], loads.ball_axial_offset[0], loads.displacement[2]]) / MICRON
+    normal = _OneBall(bearing, ball.lub, ball.axial, ball.w_i, ball.w_o, None, replace(ball.law, traction="none"))
+    bounds = ball.bounds()
+    speeds, position = np.arange(4), np.arange(4, 7)
+
+    def part(model, x, free, rows):
+        def reduced(y):
+            full = x.copy()
+            full[free] = y
+            return model.residual(full)[rows]
+
+        lo, hi = bounds[0][free], bounds[1][free]
+        return least_squares(reduced, np.clip(x[free], lo, hi), xtol=1e-12, ftol=1e-12, gtol=1e-12, method="trf",
+                             bounds=(lo, hi), max_nfev=400).x
+
+    relaxed = None
+    for _ in range(30):
+        x[speeds] = part(ball, x, speeds, [1, 3, 4, 5])  # circumferential force and the moments
+        w_c = x[0]
+        if relaxed is not None and abs(w_c - relaxed) < tol * abs(w_c):
+            break
+        relaxed = w_c if relaxed is None else 0.5 * (relaxed + w_c)  # under-relaxed: it overshoots
+        held = x.copy()
+        held[0] = relaxed
+        x[position] = part(normal, held, position, [0, 2, 6])  # radial and axial forces, race balance
+    return x
+
+
+def _result(bearing, ball, x, axial, rpm, w_i, w_o, worst, converged, message, wall):
+    w_c, w_b, c, shift = ball.unpack(x)
+    kin, f = ball.contacts(x)
+    v_ball_p = np.array([0.0, w_c * c[0], 0.0]) + np.cross(w_b, kin.point - c)
+    surface = [np.atleast_1d(v_ball_p[k] @ kin.rolling[k] + kin.slip_rolling[k]) for k in (0, 1)]
+    w_kin = float(rolling_cage_speed(c[None], w_b[None], kin.point[:1], kin.point[1:], w_i, w_o,
+                                     surface_speeds=surface)[0])
+    nominal = bearing.cage_speed(w_i, w_o)
+    norm = max(float(np.linalg.norm(w_b)), 1e-300)
+    return SteadyState(
+        axial=float(axial), rpm=float(rpm),
+        kinematic_cage_slip_percent=float(cage_slip(w_kin, w_c)), cage_slip_percent=float(cage_slip(nominal, w_c)),
+        cage_speed=float(w_c), kinematic_cage_speed=w_kin, nominal_cage_speed=float(nominal),
+        attitude_xz_deg=math.degrees(math.asin(min(abs(w_b[0]) / norm, 1.0))),
+        attitude_yz_deg=math.degrees(math.asin(min(abs(w_b[1]) / norm, 1.0))),
+        ball_omega=tuple(float(v) for v in w_b),
+        inner_load=float(f.normal_load[0]), outer_load=float(f.normal_load[1]),
+        inner_contact_angle_deg=math.degrees(float(kin.contact_angle[0])),
+        outer_contact_angle_deg=math.degrees(float(kin.contact_angle[1])),
+        inner_max_pressure=float(f.max_pressure[0]), outer_max_pressure=float(f.max_pressure[1]),
+        inner_race_shift=float(shift), ball_orbit_radius=float(c[0]), ball_axial_position=float(c[2]), residual=worst, converged=converged, message=message, wall_time_s=wall)
+
+
+def gyroscopic_minimum_axial(bearing: Bearing = REFERENCE_BEARING, rpm: float = 1800.0, *,
+                             traction_coefficient: float = 0.047, outer_rpm: float = 0.0) -> float:
+    """Jones' gyroscopic criterion (Harris & Kotzalas, Rolling Bearing Analysis, 5th ed.,
+    vol. 2, ch. 2): the smallest axial load at which the contact traction can hold the ball's
+    spin axis against the gyroscopic moment, M_g <= mu (Q_i + Q_o) D / 2, N.
+
+    Evaluated for pure rolling at the free contact angle a0 with the ball's absolute spin
+    axis perpendicular to the contact line (beta = a0), where the two rolling conditions give
+    w_c = P19's cage speed and the absolute spin W = (w_o (r_p + r cos a0) - w_c r_p) / r, so
+    M_g = (m D²/10) w_c |W| sin a0 (MODEL.md §12), and with the fixed-angle loads
+    Q_i = Q_o = F_a / (Z sin a0) (no centrifugal force: the criterion is a light-load one).
+
+    ``traction_coefficient`` mu: the largest traction coefficient the film transmits; the
+    default is the limiting-shear coefficient of the reference oil (MODEL.md §6a).
+    """
+    if not (isinstance(traction_coefficient, (int, float)) and math.isfinite(traction_coefficient)
+            and traction_coefficient > 0):
+        raise ValueError(f"traction_coefficient must be positive, got {traction_coefficient!r}")
+    for name, value in (("rpm", rpm), ("outer_rpm", outer_rpm)):
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be finite, got {value!r}")
+    w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    a0, r, r_p = bearing.contact_angle, bearing.ball_radius, bearing.pitch_radius
+    w_c = bearing.cage_speed(w_i, w_o)
+    spin = (w_o * (r_p + r * math.cos(a0)) - w_c * r_p) / r
+    m_g = bearing.ball_mass * bearing.ball_diameter ** 2 / 10.0 * abs(w_c * spin) * math.sin(a0)
+    # mu (Q_i + Q_o) D / 2 = mu F_a D / (Z sin a0) >= M_g
+    return m_g * bearing.balls * math.sin(a0) / (traction_coefficient * bearing.ball_diameter)
