@@ -149,7 +149,9 @@ def _skid_map(args) -> int:
                               progress=lambda line: print(line, flush=True),
                               contact_law=ContactLaw(traction=args.traction), refine=not args.no_refine)
     print(result.markdown())
-    print(f"wrote {args.out}/skid_map.csv, skid_map.md, thresholds.json, skid_map.png")
+    print(f"wrote {args.out}/" + ", ".join(result.files))
+    if "skid_map.png" not in result.files:
+        print("skid_map.png not written: matplotlib is missing (pip install -e '.[plot]')")
     return 0
 
 

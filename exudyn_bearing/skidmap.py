@@ -113,6 +113,8 @@ class SkidMap:
     points: list = field(default_factory=list)
     #: :meth:`refine_thresholds` of the finished map (set by :func:`skid_map`), or None
     refined: list | None = None
+    #: names of the files :func:`skid_map` wrote into ``out``
+    files: list = field(default_factory=list)
 
     def thresholds(self, level: float = 1.0) -> list[dict]:
         """Per (rpm, radial): the smallest axial load with kinematic cage slip below
@@ -145,8 +147,9 @@ class SkidMap:
         between the bracketing grid loads until the bracket is ``tolerance`` of its load
         wide (the midpoint then within ±tolerance/2, MODEL.md §12). Each refined entry gets
         ``bracket`` (N) and, with ``confirm_time`` (s), dynamic runs of that length at both
-        ends of the bracket and whether their slips lie on the two sides of the level
-        (``dynamic_slips``, ``dynamic_confirms``)."""
+        ends of the bracket (``dynamic_slips``), the dynamic model's own crossing through
+        them (``dynamic_minimum_axial``) and whether it lies within the bracket's width of
+        the steady one (``dynamic_confirms``)."""
         from .steady import steady_state
 
         out = []
@@ -182,12 +185,19 @@ class SkidMap:
 
                 dyn = [simulate(self.bearing, lubricant, axial=a, rpm=entry["rpm"], time=confirm_time, drag=drag,
                                 contact_law=contact_law).kinematic_cage_slip_percent for a in (lo, hi)]
-                refined.update(dynamic_slips=dyn, dynamic_confirms=bool(dyn[0] >= level > dyn[1]))
+                # the dynamic model integrates the fast traction rule (within ~1e-2 of the
+                # accurate one the steady solver uses): its own crossing, interpolated (or
+                # extrapolated) through the two runs, must lie within the bracket's width
+                crossing = lo + (dyn[0] - level) * (hi - lo) / (dyn[0] - dyn[1]) if dyn[0] != dyn[1] else None
+                refined.update(dynamic_slips=dyn, dynamic_minimum_axial=crossing,
+                               dynamic_confirms=bool(crossing is not None
+                                                     and abs(crossing - refined["minimum_axial"]) <= tolerance * lo))
             out.append(refined)
         return out
 
-    def write(self, out: Path) -> None:
-        """CSV, markdown and thresholds JSON (and a PNG with matplotlib)."""
+    def write(self, out: Path) -> list[str]:
+        """CSV, markdown and thresholds JSON (and a PNG with matplotlib); returns the names
+        of the files written."""
         out = Path(out)
         out.mkdir(parents=True, exist_ok=True)
         names = [f for f in SkidPoint.__dataclass_fields__]
@@ -199,7 +209,10 @@ class SkidMap:
                 writer.writerow([getattr(p, n) for n in names])
         (out / "skid_map.md").write_text(self.markdown() + "\n")
         (out / "thresholds.json").write_text(json.dumps(self.refined or self.thresholds(), indent=1))
-        self.plot(out / "skid_map.png")
+        written = ["skid_map.csv", "skid_map.md", "thresholds.json"]
+        if self.plot(out / "skid_map.png"):
+            written.append("skid_map.png")
+        return written
 
     def markdown(self) -> str:
         lines = ["| rpm | F_r (N) | F_a (N) | kinematic cage slip (%) | steady state (%) | cage slip P19 (%) | "
@@ -219,37 +232,70 @@ class SkidMap:
         for t in self.refined or self.thresholds():
             est = f"{t['minimum_axial']:.0f}" if t["minimum_axial"] is not None else "–"
             bracket = "{:.0f}–{:.0f}".format(*t["bracket"]) if "bracket" in t else "–"
-            dyn = ("{:.3f} / {:.3f}".format(*t["dynamic_slips"]) + ("" if t["dynamic_confirms"] else " (NOT confirmed)")
-                   if "dynamic_slips" in t else "–")
+            dyn = "–"
+            if "dynamic_slips" in t:
+                dyn = "{:.3f} / {:.3f}".format(*t["dynamic_slips"])
+                if t["dynamic_minimum_axial"] is not None:
+                    dyn += f": crossing {t['dynamic_minimum_axial']:.0f} N"
+                dyn += "" if t["dynamic_confirms"] else " (NOT confirmed)"
             lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {bracket} | {t['note']} | {dyn} | "
                          f"{t['hirano_minimum_axial']:.0f} |")
         return "\n".join(lines)
 
     def plot(self, path) -> bool:
+        """Kinematic cage slip against axial load per speed (log scale), the 1 % level, the
+        thresholds (refined ones with their brackets) and Hirano's load where it falls in
+        the range; False when matplotlib is missing."""
         try:
             import matplotlib
             matplotlib.use("Agg")
             import matplotlib.pyplot as plt
         except ImportError:
             return False
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig, ax = plt.subplots(figsize=(7.5, 4.8))
+        loads = [p.axial for p in self.points if p.error is None]
+        x_lo, x_hi = (min(loads), max(loads)) if loads else (0.0, 1.0)
+        thresholds = {(t["rpm"], t["radial"]): t for t in (self.refined or self.thresholds())}
+        hirano_outside = []
         for rpm in sorted({p.rpm for p in self.points}):
             for radial in sorted({p.radial for p in self.points}):
                 pts = sorted((p for p in self.points if p.rpm == rpm and p.radial == radial and p.error is None),
                              key=lambda p: p.axial)
                 if not pts:
                     continue
-                line, = ax.plot([p.axial for p in pts], [p.kinematic_cage_slip_percent for p in pts], "o-",
-                                label=f"{rpm:g} rpm, F_r {radial:g} N")
-                ax.plot([p.axial for p in pts if not p.settled], [p.kinematic_cage_slip_percent for p in pts if not p.settled],
-                        "x", color="red", ms=10)
-                ax.axvline(hirano_minimum_axial(self.bearing, rpm), color=line.get_color(), ls=":", lw=1)
+                # log axis: slips at or below zero (pure rolling within rounding) sit on its floor
+                slip = [max(p.kinematic_cage_slip_percent, 1e-3) for p in pts]
+                line, = ax.plot([p.axial for p in pts], slip, "o-", label=f"{rpm:g} rpm, F_r {radial:g} N")
+                unsettled = [(p.axial, v) for p, v in zip(pts, slip) if not p.settled]
+                if unsettled:
+                    ax.plot(*zip(*unsettled), "x", color="red", ms=10)
+                t = thresholds.get((rpm, radial))
+                if t and t["minimum_axial"] is not None:
+                    if "bracket" in t:
+                        ax.axvspan(*t["bracket"], color=line.get_color(), alpha=0.25, lw=0)
+                    ax.axvline(t["minimum_axial"], color=line.get_color(), lw=1)
+                    ax.annotate(f"{t['minimum_axial']:.0f} N", (t["minimum_axial"], 1.0), xytext=(4, 6),
+                                textcoords="offset points", color=line.get_color(), fontsize=8)
+                hirano = hirano_minimum_axial(self.bearing, rpm)
+                if x_lo <= hirano <= x_hi:
+                    ax.axvline(hirano, color=line.get_color(), ls=":", lw=1)
+                else:
+                    hirano_outside.append(f"{rpm:g} rpm: {hirano:.0f} N")
         ax.axhline(1.0, color="grey", lw=0.8)
-        ax.set_yscale("symlog", linthresh=0.1)  # the 1 % threshold region stays readable
-        slips = [p.kinematic_cage_slip_percent for p in self.points if p.error is None]
-        ax.set_ylim(bottom=min(0.0, *slips) if slips else 0.0)
-        ax.set(xlabel="axial load (N)", ylabel="kinematic cage slip (%)",
-               title="Skid-risk map (x: not settled; dotted: Hirano 10 Z F_c)")
+        ax.annotate("1 % (skid threshold)", (x_lo, 1.0), xytext=(2, -11), textcoords="offset points", fontsize=8,
+                    color="grey")
+        ax.set_yscale("log")
+        ax.set_xlim(x_lo - 0.03 * (x_hi - x_lo), x_hi + 0.03 * (x_hi - x_lo))
+        b = self.bearing
+        time = sorted({p.time for p in self.points})
+        ax.set(xlabel="axial load F_a (N)", ylabel="kinematic cage slip (%)",
+               title=f"Skid-risk map: Z {b.balls}, D {b.ball_diameter * 1e3:g} mm, d_m {b.pitch_diameter * 1e3:g} mm, "
+                     f"free angle {math.degrees(b.contact_angle):.1f}°; {', '.join(f'{t:g}' for t in time)} s per point")
+        ax.title.set_fontsize(9)
+        note = "solid line: threshold (band: bracket); dotted: Hirano 10 Z F_c; x: not settled"
+        if hirano_outside:
+            note += "\nHirano beyond the range: " + ", ".join(hirano_outside)
+        ax.text(0.01, 0.01, note, transform=ax.transAxes, fontsize=7, va="bottom")
         ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(path, dpi=120)
@@ -400,5 +446,5 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
                              f"{t['bracket'][0]:.0f}–{t['bracket'][1]:.0f} N, dynamic "
                              f"{'confirms' if t.get('dynamic_confirms') else 'does NOT confirm'} it)")
     if out is not None:
-        result.write(Path(out))
+        result.files = result.write(Path(out))
     return result

@@ -293,7 +293,8 @@ def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
 
     assert steady_state(axial=lo, rpm=1800).kinematic_cage_slip_percent >= 1.0
     assert steady_state(axial=hi, rpm=1800).kinematic_cage_slip_percent < 1.0
-    assert threshold["dynamic_confirms"] and threshold["dynamic_slips"][0] >= 1.0 > threshold["dynamic_slips"][1]
+    assert threshold["dynamic_confirms"]
+    assert abs(threshold["dynamic_minimum_axial"] - threshold["minimum_axial"]) <= 0.04 * lo
     assert "bisection" in threshold["note"]
     assert_real_png(out / "skid_map.png")
 
