@@ -15,7 +15,12 @@ from .presets import REFERENCE_BEARING
 
 
 def _setup(path) -> BearingFile:
-    return load_bearing(path) if path else BearingFile(REFERENCE_BEARING)
+    if not path:
+        return BearingFile(REFERENCE_BEARING)
+    try:
+        return load_bearing(path)
+    except OSError as err:
+        raise ValueError(f"--bearing: cannot read {path} ({err.strerror or err})") from None
 
 
 def _loads(args) -> int:
@@ -56,6 +61,12 @@ def _simulate(args) -> int:
     from .runner import SolverSettings, simulate
 
     setup = _setup(args.bearing)
+    if args.plot:
+        from pathlib import Path
+
+        folder = Path(args.plot).resolve().parent
+        if not folder.is_dir():
+            raise ValueError(f"--plot: the folder of {args.plot} does not exist ({folder})")
     settings = SolverSettings(solver=args.solver, step=args.step,
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
@@ -152,6 +163,11 @@ def _skid_map(args) -> int:
     print(f"wrote {args.out}/" + ", ".join(result.files))
     if "skid_map.png" not in result.files:
         print("skid_map.png not written: matplotlib is missing (pip install -e '.[plot]')")
+    failed = [p for p in result.points if p.error]
+    if failed:
+        raise RuntimeError(f"{len(failed)} of {len(result.points)} points failed (first: F_a {failed[0].axial:g} N, "
+                           f"F_r {failed[0].radial:g} N, {failed[0].rpm:g} rpm: {failed[0].error}); see "
+                           f"{args.out}/skid_map.md; a second run retries them")
     return 0
 
 
@@ -160,6 +176,8 @@ def _render(args) -> int:
 
     from contact.ballrace import ContactLaw
 
+    if not (math.isfinite(args.time) and args.time > 0):
+        raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
                        frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction))
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")

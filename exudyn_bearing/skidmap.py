@@ -40,12 +40,17 @@ def parse_range(text: str) -> list[float]:
         if ":" in text:
             start, stop, count = text.split(":")
             n = int(count)
-            if n < 1:
+            if n < 1 or float(start) > float(stop):
                 raise ValueError
-            return [float(v) for v in np.linspace(float(start), float(stop), n)]
-        return [float(v) for v in text.split(",") if v.strip()]
+            values = [float(v) for v in np.linspace(float(start), float(stop), n)]
+        else:
+            values = [float(v) for v in text.split(",") if v.strip()]
+        if not values or not all(math.isfinite(v) for v in values):
+            raise ValueError
+        return values
     except ValueError:
-        raise ValueError(f"range must be 'start:stop:count' or 'a,b,c', got {text!r}") from None
+        raise ValueError(f"range must be 'start:stop:count' (start <= stop, count >= 1) or 'a,b,c' of finite "
+                         f"numbers, got {text!r}") from None
 
 
 def hirano_minimum_axial(bearing: Bearing, rpm: float) -> float:
@@ -312,7 +317,10 @@ def _load_done(path: Path) -> dict:
                     p = SkidPoint(**json.loads(line))
                 except (json.JSONDecodeError, TypeError):
                     continue  # a line cut by an interruption
-                done[p.key] = p
+                if p.error is None:  # failed points are run again
+                    done[p.key] = p
+                else:
+                    done.pop(p.key, None)
     return done
 
 
@@ -386,9 +394,18 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         After the grid, refine each pure-axial threshold with the steady-state solver and
         confirm its bracket dynamically (:meth:`SkidMap.refine_thresholds`).
     """
+    for name, values, low in (("axial", axial, 0.0), ("radial", radial, 0.0), ("rpm", rpm, None)):
+        bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
+               or (low is not None and v < low)]
+        if bad:
+            raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}")
+    if not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
+        raise ValueError(f"time must be a positive number of seconds, got {time!r}")
     grid = [SkidPoint(float(a), float(r), float(n), float(time)) for n, r, a in itertools.product(rpm, radial, axial)]
     if not grid:
         raise ValueError("axial, radial, rpm: the grid is empty")
+    if any(p.axial == 0 and p.radial == 0 for p in grid):
+        raise ValueError("axial, radial: a point with neither load has no load distribution")
     journal = Path(out) / "points.jsonl" if out is not None else None
     done = {}
     if journal is not None:

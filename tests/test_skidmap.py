@@ -118,3 +118,30 @@ def test_resume_refuses_results_of_other_inputs(tmp_path):
     (old / "points.jsonl").write_text("")
     with pytest.raises(ValueError, match="out: .*no record"):
         _check_inputs(old, *args)
+
+
+def test_failed_points_are_retried_on_resume(tmp_path):
+    """A point that failed (here: 1e9 N, no quasi-static equilibrium) is recorded with its
+    error and run again by the next call into the same folder, not served from the journal."""
+    lines = []
+    first = skid_map(axial=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
+                     refine=False)
+    assert first.points[0].error
+    lines.clear()
+    second = skid_map(axial=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
+                      refine=False)
+    assert not any(line.startswith("resuming") for line in lines)
+    assert second.points[0].error
+    journal = (tmp_path / "points.jsonl").read_text().splitlines()
+    assert len(journal) == 2  # both attempts recorded
+
+
+@pytest.mark.parametrize("kw, name", [(dict(axial=[-1.0]), "axial"), (dict(radial=[float("nan")]), "radial"),
+                                      (dict(rpm=[float("inf")]), "rpm"), (dict(time=0.0), "time"),
+                                      (dict(axial=[0.0]), "axial")])
+def test_grid_is_validated_before_any_run(kw, name, tmp_path):
+    args = dict(axial=[1300.0], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=None)
+    args.update(kw)
+    with pytest.raises(ValueError, match=name):
+        skid_map(**args)
+    assert not (tmp_path / "points.jsonl").exists()
