@@ -56,19 +56,26 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
     return magnitude[..., None] * e
 
 
-def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness):
+def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness, origin=(0.0, 0.0, 0.0)):
     """The paper's cage (P9, P10): springs between neighbouring balls, (n, 3), N.
 
-    Each spring's length is the chord between neighbouring ball centres projected on the
-    bearing plane, its free length the nominal chord 2 r_p sin(pi/Z).
+    Each spring j (ball j to ball j + 1) is strained by the azimuth difference of its balls,
+    dpsi_j = psi_(j+1) - psi_j - 2 pi / Z, and acts as a torsional spring about the bearing
+    axis of torque T_j = k r_p² dpsi_j (k in N/m: k times the arc length at r_p): ball j gets
+    T_j / r_j along its circumferential direction e_psi, ball j + 1 gets -T_j / r_(j+1).
+    So the chain holds the balls' spacing only — no radial force at any orbit radius (a
+    chord-length spring is a hoop that pulls balls orbiting outside r_p inward) — and puts
+    no net moment about the axis on the balls.
     """
-    c = np.asarray(ball_centre, dtype=float)  # (..., n, 3)
+    c = np.asarray(ball_centre, dtype=float) - np.asarray(origin, dtype=float)  # (..., n, 3)
+    axis = np.asarray(axis, dtype=float)
     planar = c - (c @ axis)[..., None] * axis
-    chord = np.roll(planar, -1, axis=-2) - planar  # ball i -> ball i+1
-    length = np.linalg.norm(chord, axis=-1)
-    free = 2.0 * pitch_radius * np.sin(np.pi / c.shape[-2])
-    f = (stiffness * (length - free) / length)[..., None] * chord  # pulls ball i towards i+1 when stretched
-    return f - np.roll(f, 1, axis=-2)
+    radius = np.linalg.norm(planar, axis=-1)
+    e_psi = np.cross(axis, planar) / radius[..., None]
+    nxt = np.roll(planar, -1, axis=-2)
+    turn = np.arctan2(np.cross(planar, nxt) @ axis, np.einsum("...i,...i->...", planar, nxt))
+    torque = stiffness * pitch_radius ** 2 * (turn - 2.0 * np.pi / c.shape[-2])  # spring j, stretched > 0
+    return (torque / radius)[..., None] * e_psi - (np.roll(torque, 1, axis=-1) / radius)[..., None] * e_psi
 
 
 def radial_offset(point, origin, axis):

@@ -736,7 +736,6 @@ def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pit
     ``drag_force`` (B, Z, 3)."""
     nb, z = c.shape[0], c.shape[1]
     gap = 0.5 * clearance
-    free = 2.0 * pitch_radius * math.sin(math.pi / z)
     for ib in range(nb):
         for j in range(z):
             for i in range(3):
@@ -767,20 +766,30 @@ def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pit
                     mag = -sgn * max(stiffness * pen + damping * s_dot * sgn, 0.0) if pen > 0.0 else 0.0
                 for i in range(3):
                     cage_force[ib, j, i] = mag * e[i]
-        elif kind == 2:
+        elif kind == 2:  # torsional springs on the azimuth differences (contact.cage.spring_chain_forces)
             planar = np.empty((z, 3))
+            radius = np.empty(z)
             for j in range(z):
-                ca = c[ib, j, 0] * axis[0] + c[ib, j, 1] * axis[1] + c[ib, j, 2] * axis[2]
-                for i in range(3):
-                    planar[j, i] = c[ib, j, i] - ca * axis[i]
+                d0, d1, d2 = c[ib, j, 0] - origin[0], c[ib, j, 1] - origin[1], c[ib, j, 2] - origin[2]
+                ca = d0 * axis[0] + d1 * axis[1] + d2 * axis[2]
+                planar[j, 0], planar[j, 1], planar[j, 2] = d0 - ca * axis[0], d1 - ca * axis[1], d2 - ca * axis[2]
+                radius[j] = math.sqrt(planar[j, 0] ** 2 + planar[j, 1] ** 2 + planar[j, 2] ** 2)
             for j in range(z):
                 nxt = (j + 1) % z
-                ch = planar[nxt] - planar[j]
-                length = math.sqrt(ch[0] * ch[0] + ch[1] * ch[1] + ch[2] * ch[2])
-                f = stiffness * (length - free) / length
-                for i in range(3):  # spring j pulls ball j towards j+1 when stretched
-                    cage_force[ib, j, i] += f * ch[i]
-                    cage_force[ib, nxt, i] -= f * ch[i]
+                a, b = planar[j], planar[nxt]
+                crs = ((a[1] * b[2] - a[2] * b[1]) * axis[0] + (a[2] * b[0] - a[0] * b[2]) * axis[1]
+                       + (a[0] * b[1] - a[1] * b[0]) * axis[2])
+                turn = math.atan2(crs, a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+                torque = stiffness * pitch_radius * pitch_radius * (turn - 2.0 * math.pi / z)
+                for k, sgn in ((j, 1.0), (nxt, -1.0)):
+                    p = planar[k]
+                    e0 = (axis[1] * p[2] - axis[2] * p[1]) / radius[k]
+                    e1 = (axis[2] * p[0] - axis[0] * p[2]) / radius[k]
+                    e2 = (axis[0] * p[1] - axis[1] * p[0]) / radius[k]
+                    mag = sgn * torque / radius[k]
+                    cage_force[ib, k, 0] += mag * e0
+                    cage_force[ib, k, 1] += mag * e1
+                    cage_force[ib, k, 2] += mag * e2
         if drag_factor > 0.0:
             for j in range(z):
                 r0, r1, r2 = c[ib, j, 0] - origin[0], c[ib, j, 1] - origin[1], c[ib, j, 2] - origin[2]

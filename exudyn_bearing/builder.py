@@ -20,7 +20,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from contact.ballrace import ContactLaw
-from contact.kinematics import rolling_cage_speed
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
 from .connector import BearingConnector, CageModel
@@ -234,26 +233,37 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     # the quasi-static solver takes a non-negative inner speed; only |cage speed| matters
     sense = -1.0 if rpm_i < 0 else 1.0
     speeds = dict(rpm=abs(rpm_i), outer_rpm=sense * rpm_o, hertz_method=contactLaw.hertz_method)
-    if loaded:
-        loads = solve_load_distribution(bearing, axial=axial, radial=radial, **speeds)
-        relative[:3] = loads.displacement
-    else:
-        loads = solve_load_distribution(bearing, displacement=relative, **speeds)
-    z = bearing.balls
-    psi = loads.azimuth
-    e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)
-    e_z = np.array([0.0, 0.0, 1.0])
-    r_c = bearing.pitch_radius + loads.ball_radius_offset
-    c_loc = r_c[:, None] * e_r + loads.ball_axial_offset[:, None] * e_z
-    a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
-    p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
-    p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
     if initialControl not in ("auto", "inner", "outer"):
         raise ValueError(f"initialControl must be 'auto', 'inner' or 'outer', got {initialControl!r}")
-    beta = _control_axis(bearing, lubricant, loads, w_i, w_o, initialControl)
-    spin_axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * e_z
-    w_c, spin = rolling_cage_speed(c_loc, spin_axis, p_in, p_out, w_i, w_o, return_spin=True)
-    omega_loc = spin[:, None] * spin_axis
+    z = bearing.balls
+    e_z = np.array([0.0, 0.0, 1.0])
+    cage_speed = None
+    # the quasi-static centrifugal force at the balls' own pure-rolling orbit (not the
+    # nominal cage speed: 200 N would start 13.5 N out of radial balance on a 15 N load)
+    for _ in range(20):
+        if loaded:
+            loads = solve_load_distribution(bearing, axial=axial, radial=radial, cage_speed=cage_speed, **speeds)
+            relative[:3] = loads.displacement
+        else:
+            loads = solve_load_distribution(bearing, displacement=relative, cage_speed=cage_speed, **speeds)
+        psi = loads.azimuth
+        e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)
+        r_c = bearing.pitch_radius + loads.ball_radius_offset
+        c_loc = r_c[:, None] * e_r + loads.ball_axial_offset[:, None] * e_z
+        a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
+        p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
+        p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
+        inner_controls = _inner_controls(bearing, lubricant, loads, w_i, w_o, initialControl)
+        w_c, _ = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls, inner_origin=relative[:3])
+        orbit = float(np.mean(np.abs(w_c)))
+        if cage_speed is not None and abs(orbit - cage_speed) <= 1e-6 * orbit:
+            break
+        cage_speed = orbit
+    # one common orbital speed, as the cage holds the balls (under radial load their
+    # pure-rolling speeds differ around the bearing): rolling without slip or spin at the
+    # controlling contact, the other contact takes the difference
+    w_c, omega_loc = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls,
+                                     cage_speed=float(np.mean(w_c)), inner_origin=relative[:3])
     steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
                            sense=sense, inner=inner, axial_varies=callable(axialForce) or callable(radialForce),
                            displaced=innerRaceDisplacement is not None, contactLaw=contactLaw, ballDrag=ballDrag)
@@ -399,21 +409,80 @@ def _spin_resistance(bearing, lubricant, load, angle, race, speed):
     return lubricant.viscosity * np.pi * a * b * (a ** 2 + b ** 2) * radial / h
 
 
-def _control_axis(bearing, lubricant, loads, w_i, w_o, control="auto"):
-    """Initial spin-axis angle of each ball from the bearing axis (rad): raceway control
-    (Jones) by the contact with the larger Newtonian spin resistance, which under EHD
+def _inner_controls(bearing, lubricant, loads, w_i, w_o, control="auto"):
+    """Per ball: True where the inner contact controls the spin (raceway control, Jones):
+    'auto' takes the contact with the larger Newtonian spin resistance, which under EHD
     traction is usually the smaller, higher-pressure inner contact."""
-    a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
-    gamma = bearing.ball_diameter / bearing.pitch_diameter
-    outer = np.arctan2(np.sin(a_o), np.cos(a_o) + gamma)
-    inner = np.arctan2(np.sin(a_i), np.cos(a_i) - gamma)
     if control != "auto":
-        return inner if control == "inner" else outer
+        return np.full(bearing.balls, control == "inner")
+    gamma = bearing.ball_diameter / bearing.pitch_diameter
     speed = max(abs(w_i - w_o), 1e-3) * bearing.pitch_radius * (1 - gamma ** 2) / 2  # entrainment, m/s
     q_i, q_o = np.maximum(loads.inner_load, 1e-9), np.maximum(loads.outer_load, 1e-9)
-    m_i = _spin_resistance(bearing, lubricant, q_i, a_i, "inner", speed)
-    m_o = _spin_resistance(bearing, lubricant, q_o, a_o, "outer", speed)
-    return np.where(m_i > m_o, inner, outer)
+    m_i = _spin_resistance(bearing, lubricant, q_i, loads.inner_contact_angle, "inner", speed)
+    m_o = _spin_resistance(bearing, lubricant, q_o, loads.outer_contact_angle, "outer", speed)
+    return m_i > m_o
+
+
+def raceway_control(centre, inner_point, outer_point, inner_speed, outer_speed, inner_controls, cage_speed=None,
+                    inner_origin=(0.0, 0.0, 0.0)):
+    """Pure rolling with raceway control (MODEL.md §7): per ball the orbital speed w_c and the
+    absolute angular velocity w_b (in the ball's meridional plane) with zero rolling slip at
+    both contact centres and zero spin at the controlling contact, (w_race e_z - w_b) . n = 0.
+
+    All three conditions are linear in (w_c, w_b . e_r, w_b . e_z): with d = p - c and the
+    race surface speed along the rolling direction e_psi,
+    w_c r_c + (w_b x d) . e_psi = w_race ((p - o) . e_r), o the race centre, and
+    (w_race e_z - w_b) . n = 0 with
+    n = d / |d|. (Jones' tan(beta) formulas give the same axis relative to the cage; used
+    as the absolute axis they leave spin at the controlling contact.)
+
+    Parameters
+    ----------
+    centre, inner_point, outer_point : ndarray (Z, 3)
+        Ball centres and contact centres, bearing frame (z the axis), m.
+    inner_speed, outer_speed : float
+        Race speeds about +z, rad/s.
+    inner_controls : ndarray of bool (Z,)
+    cage_speed : float, optional
+        Impose this orbital speed on every ball (rad/s): the rolling condition of the
+        non-controlling contact is then dropped.
+    inner_origin : (3,), optional
+        Centre of the (displaced) inner race, bearing frame, m.
+
+    Returns
+    -------
+    w_c : ndarray (Z,), rad/s
+    omega : ndarray (Z, 3), rad/s, bearing frame
+    """
+    c = np.asarray(centre, dtype=float)
+    r_c = np.hypot(c[:, 0], c[:, 1])
+    e_r = np.stack([c[:, 0] / r_c, c[:, 1] / r_c, np.zeros(len(c))], axis=1)
+    e_z = np.array([0.0, 0.0, 1.0])
+    w_c = np.empty(len(c))
+    omega = np.empty((len(c), 3))
+    for j in range(len(c)):
+        rows, rhs = [], []
+        normals = {}
+        for name, p, w_race, o in (("inner", inner_point[j], inner_speed, np.asarray(inner_origin, dtype=float)),
+                                   ("outer", outer_point[j], outer_speed, np.zeros(3))):
+            d = p - c[j]
+            dr, dz = d @ e_r[j], d[2]
+            # (w_b x d) . e_psi with w_b = x e_r + y e_z and d = dr e_r + dz e_z: y dr - x dz
+            rows.append([r_c[j], -dz, dr])
+            rhs.append(w_race * ((p - o) @ e_r[j]))
+            normals[name] = (np.array([dr, dz]) / np.hypot(dr, dz), w_race)
+        (n_r, n_z), w_race = normals["inner" if inner_controls[j] else "outer"]
+        rows.append([0.0, n_r, n_z])
+        rhs.append(w_race * n_z)
+        if cage_speed is None:
+            w_c[j], x, y = np.linalg.solve(np.array(rows), np.array(rhs))
+        else:
+            keep = [0 if inner_controls[j] else 1, 2]
+            a, b = np.array(rows)[keep], np.array(rhs)[keep]
+            w_c[j] = cage_speed
+            x, y = np.linalg.solve(a[:, 1:], b - a[:, 0] * cage_speed)
+        omega[j] = x * e_r[j] + y * e_z
+    return w_c, omega
 
 
 def _rotvec_matrix(nu):

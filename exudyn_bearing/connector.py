@@ -436,7 +436,8 @@ class BearingConnector:
             react_f[:, :, s] -= cage_force
             react_t[:, :, s] -= cross(c - pos[:, s, None], cage_force)
         elif self.cage.kind == "spring-chain":
-            cage_force = cage_physics.spring_chain_forces(c, self.axis, self.bearing.pitch_radius, self.cage.stiffness)
+            cage_force = cage_physics.spring_chain_forces(c, self.axis, self.bearing.pitch_radius, self.cage.stiffness,
+                                                          self.origin)
         drag_force = np.zeros((bsz, z, 3))
         if self.drag is not None and self.drag.drag_coefficient * self.drag.oil_volume_fraction > 0:
             drag_force = cage_physics.drag_forces(c, v, self.axis, self.origin, self.drag.drag_coefficient,

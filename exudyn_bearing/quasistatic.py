@@ -112,7 +112,9 @@ class _Geometric:
         (self.ri, self.zi), (self.ro, self.zo) = bearing.groove_centres()
         self.ti = (bearing.inner_conformity - 0.5) * bearing.ball_diameter
         self.to = (bearing.outer_conformity - 0.5) * bearing.ball_diameter
-        self.fc = centrifugal
+        self.fc = centrifugal  # at the pitch radius, N
+        # the ball orbits at r_p + offset: m w_c² per metre of orbit radius
+        self.fc_rate = centrifugal / bearing.pitch_radius
         self.method = hertz_method
 
     def centres(self, offsets: np.ndarray) -> np.ndarray:
@@ -135,7 +137,7 @@ class _Geometric:
 
     def ball_residual(self, offsets, x):
         con, _ = self.contacts(offsets, x)
-        force = self.fc * self.e_r
+        force = (self.fc_rate * (self.b.pitch_radius + offsets[:, :1])) * self.e_r
         for side in con.values():
             force = force - side["load"][:, None] * side["normal"]
         return np.stack([np.einsum("ij,ij->i", force, self.e_r), force[:, 2]], axis=1), con
@@ -150,6 +152,7 @@ class _Geometric:
             nn = n[:, :, None] * n[:, None, :]
             s = side["dload"][:, None, None] * nn + (side["load"] / side["distance"])[:, None, None] * (np.eye(3) - nn)
             jac -= np.einsum("zia,zij,zjb->zab", basis, s, basis)
+        jac[:, 0, 0] += self.fc_rate  # the centrifugal force grows with the orbit radius
         return jac
 
     def initial_offsets(self, x) -> np.ndarray:

@@ -89,9 +89,11 @@ def _jh_contacts(psi, s, shift):
     return out[0], out[1], e_r
 
 
-def _jh_ball(psi, shift, fc):
-    """Ball at psi in equilibrium of its two contact loads and m r_p w_c² (the cage holds
-    its azimuth): (Q_i, Q_o, alpha_i, alpha_o, n_i)."""
+def _jh_ball(psi, shift, rate):
+    """Ball at psi in equilibrium of its two contact loads and its centrifugal force
+    m r_c w_c² = ``rate`` r_c at its own orbit radius r_c (the cage holds its azimuth):
+    (Q_i, Q_o, alpha_i, alpha_o, n_i)."""
+    fc = rate * JH_RP
     e_r, _, _, g_i, g_o = _jh_grooves(psi, np.zeros(2), shift)
     overlap = np.linalg.norm(g_i - g_o) - 2 * JH_TUBE
     if overlap <= 0 and fc == 0:
@@ -103,7 +105,7 @@ def _jh_ball(psi, shift, fc):
 
     def residual(s_um):
         (q_i, _, n_i), (q_o, _, n_o), e_r = _jh_contacts(psi, s_um * 1e-6, shift)
-        force = fc * e_r - q_i * n_i - q_o * n_o
+        force = rate * (JH_RP + s_um[0] * 1e-6) * e_r - q_i * n_i - q_o * n_o
         return np.array([force @ e_r, force[2]])
 
     s_um = _newton(residual, np.array([start @ e_r, start[2]]) * 1e6, tol=1e-9 * max(fc, 100.0))
@@ -115,15 +117,15 @@ def _jh_ball(psi, shift, fc):
 def jones_harris(axial, radial=0.0, rpm=0.0):
     """Jones–Harris equilibrium (rigid rings, Hertz balls, no tilt): the inner-race shift
     (dx, dz) for which the balls' contact forces balance (radial, 0, axial), each ball in
-    equilibrium with the centrifugal force m r_p w_c² at Harris's nominal cage speed
+    equilibrium with the centrifugal force m r_c w_c² at Harris's nominal cage speed
     w_c = w/2 (1 - D cos a0 / d_m). Returns (Q_i, Q_o, alpha_i, alpha_o) per ball (ball 0
     at +x, the radial load's direction) and the shift (m)."""
     w_c = rpm * math.pi / 30 / 2 * (1 - JH_D * math.cos(JH_A0) / JH_DM)
-    fc = JH_MASS * JH_RP * w_c ** 2
+    rate = JH_MASS * w_c ** 2
     psi = 2 * np.pi * np.arange(JH_Z) / JH_Z
 
     def balls(x_um):
-        return [_jh_ball(p, x_um * 1e-6, fc) for p in psi]
+        return [_jh_ball(p, x_um * 1e-6, rate) for p in psi]
 
     def residual(x_um):
         force = sum(b[0] * b[4] for b in balls(x_um))  # the balls' push on the inner race
@@ -203,8 +205,10 @@ def test_centrifugal_force_splits_contact_angles_at_1800rpm(fa, inner, outer):
         decimals = 1 if a_doc != round(a_doc) else 0
         assert printed(math.degrees(a[0]), a_doc, decimals), (math.degrees(a[0]), a_doc)
     assert a_i[0] > math.radians(40) > a_o[0]  # the split
-    # each ball's own balance: contact forces + centrifugal, closes to 1e-6 of its load
-    radial = res.outer_load * np.cos(res.outer_contact_angle) - res.inner_load * np.cos(res.inner_contact_angle) - fc
+    # each ball's own balance: contact forces + centrifugal at its orbit radius, closes to
+    # 1e-6 of its load
+    radial = (res.outer_load * np.cos(res.outer_contact_angle) - res.inner_load * np.cos(res.inner_contact_angle)
+              - fc * (1 + res.ball_radius_offset / B.pitch_radius))
     axial = res.outer_load * np.sin(res.outer_contact_angle) - res.inner_load * np.sin(res.inner_contact_angle)
     assert np.max(np.hypot(radial, axial) / res.outer_load) < 1e-6
     _check_race_balance(res, fa, 0.0)
