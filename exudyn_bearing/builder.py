@@ -160,9 +160,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
         that position (no applied forces then), e.g. a preload by interference.
     initialControl : {'auto', 'inner', 'outer'}
-        Raceway control (Jones) that sets each ball's initial spin axis: 'auto' takes the
-        contact with the larger Newtonian spin resistance (with ball drag the balls settle
-        there; e.g. the inner race at 1.3 kN for the reference bearing), or force one.
+        Pure-rolling start: 'inner'/'outer' is raceway control (Jones) by that contact —
+        each ball's absolute spin axis solved for zero spin there and zero rolling slip at
+        both contacts (:func:`raceway_control`); 'auto' takes Jones' angle of the contact
+        with the larger Newtonian spin resistance as the absolute axis (see
+        ``_jones_axis_start``: measured to start combined loads with the fewest step cuts).
     initialState : {'auto', 'steady', 'rolling'}
         'steady': every ball, the cage and the inner race start in the steady rolling state
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
@@ -238,7 +240,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     z = bearing.balls
     e_z = np.array([0.0, 0.0, 1.0])
     cage_speed = None
-    # the quasi-static centrifugal force at the balls' own pure-rolling orbit (not the
+    # the quasi-static centrifugal force at each ball's own pure-rolling orbit (not the
     # nominal cage speed: 200 N would start 13.5 N out of radial balance on a 15 N load)
     for _ in range(20):
         if loaded:
@@ -254,16 +256,15 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
         p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
         inner_controls = _inner_controls(bearing, lubricant, loads, w_i, w_o, initialControl)
-        w_c, _ = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls, inner_origin=relative[:3])
-        orbit = float(np.mean(np.abs(w_c)))
-        if cage_speed is not None and abs(orbit - cage_speed) <= 1e-6 * orbit:
+        if initialControl == "auto":
+            w_c, omega_loc = _jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls)
+        else:
+            w_c, omega_loc = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls, inner_origin=relative[:3])
+        orbit = np.abs(w_c)
+        if cage_speed is not None and np.max(np.abs(orbit - cage_speed)) <= 1e-6 * np.max(orbit):
             break
-        cage_speed = orbit
-    # one common orbital speed, as the cage holds the balls (under radial load their
-    # pure-rolling speeds differ around the bearing): rolling without slip or spin at the
-    # controlling contact, the other contact takes the difference
-    w_c, omega_loc = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls,
-                                     cage_speed=float(np.mean(w_c)), inner_origin=relative[:3])
+        # one speed for a pure axial load (all balls alike), each ball's own otherwise
+        cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
     steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
                            sense=sense, inner=inner, axial_varies=callable(axialForce) or callable(radialForce),
                            displaced=innerRaceDisplacement is not None, contactLaw=contactLaw, ballDrag=ballDrag)
@@ -421,6 +422,23 @@ def _inner_controls(bearing, lubricant, loads, w_i, w_o, control="auto"):
     m_i = _spin_resistance(bearing, lubricant, q_i, loads.inner_contact_angle, "inner", speed)
     m_o = _spin_resistance(bearing, lubricant, q_o, loads.outer_contact_angle, "outer", speed)
     return m_i > m_o
+
+
+def _jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls):
+    """The 'auto' start: Jones' raceway-control angle, tan b = sin a / (cos a -/+ D/d_m) —
+    the spin axis relative to the cage — taken as the absolute axis, with zero rolling slip
+    at both contacts. Not a raceway-control state (both contacts spin a little), but it lies
+    between the inner- and outer-controlled absolute axes and starts the combined-load
+    case with the fewest step cuts (0.02 s, reference bearing, 2.2 kN + 2 kN radial: 201
+    steps for 200 and 52 Jacobians; exact inner / outer control 494 / 222 steps)."""
+    from contact.kinematics import rolling_cage_speed
+
+    gamma = bearing.ball_diameter / bearing.pitch_diameter
+    beta = np.where(inner_controls, np.arctan2(np.sin(a_i), np.cos(a_i) - gamma),
+                    np.arctan2(np.sin(a_o), np.cos(a_o) + gamma))
+    axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * np.array([0.0, 0.0, 1.0])
+    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True)
+    return w_c, spin[:, None] * axis
 
 
 def raceway_control(centre, inner_point, outer_point, inner_speed, outer_speed, inner_controls, cage_speed=None,

@@ -151,7 +151,8 @@ def _skid_map(args) -> int:
             raise ValueError("--scheduler needs dask[distributed]: pip install -e .[dask]") from None
         client = Client(args.scheduler)
     print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
-          f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, {args.time:g} s per point -> {args.out}", flush=True)
+          f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
+          f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
     from contact.ballrace import ContactLaw
 
     result = skidmap.skid_map(setup.bearing, setup.lubricant, axial=skidmap.parse_range(args.axial),
@@ -254,7 +255,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="axial loads, N: start:stop:count or a,b,c")
     p.add_argument("--radial", default="0", help="radial loads, N: start:stop:count or a,b,c")
     p.add_argument("--rpm", default=",".join(f"{v:g}" for v in skidmap.DEFAULT_RPM), help="inner-race speeds, rpm")
-    p.add_argument("--time", type=float, default=skidmap.DEFAULT_TIME, help="simulated time per point, s")
+    p.add_argument("--time", type=float, default=skidmap.DEFAULT_TIME,
+                   help="fixed simulated time per point, s (default: until settled, 0.1 s doubling up to "
+                        f"{skidmap.MAX_TIME:g} s)")
     p.add_argument("--out", default="out/skid_map", help="output directory (resumes what it finds there)")
     p.add_argument("--workers", type=int, default=None, help="local worker processes (default: CPU count)")
     p.add_argument("--scheduler", help="Dask scheduler address (runs the grid on that cluster)")

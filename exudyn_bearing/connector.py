@@ -21,6 +21,11 @@ from .races import Race
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
 
 
+#: Velocity step of the block Jacobian's difference quotients per m/s of the balls' mean speed
+#: (1e-5 m/s on the reference bearing at 1800 rpm; see :meth:`BearingConnector.jacobian`).
+JACOBIAN_VELOCITY_STEP = 1.6e-6
+
+
 @dataclass(frozen=True)
 class CageModel:
     """Ball–cage interaction (MODEL.md §1).
@@ -520,8 +525,8 @@ class BearingConnector:
                 return f"t = {t:.6g} s: non-finite {what} of {names.get(int(bad[0]), f'node slot {bad[0]}')}"
         return f"t = {t:.6g} s: non-finite state"
 
-    def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=1e-4,
-                 eps_angular=1e-4):
+    def jacobian(self, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=None,
+                 eps_angular=None):
         """Block finite-difference Jacobian for Exudyn's ``jacobianUserFunction``:
         -(f_q dF/dq + f_qt dF/dq_t), dense (6 n_nodes)².
 
@@ -536,15 +541,24 @@ class BearingConnector:
         contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
         like the slots.
 
-        The velocity steps (``eps_velocity`` m/s, ``eps_angular`` rad/s) are secants over the
-        slip a Newton iteration moves, not tangents: the film's elastic knee (MODEL.md §6b)
-        is micrometres per second wide on lightly loaded contacts, and its tangent goes stale
-        within a step. Measured on the case matrix (0.02 s, docs/heavy_load_matrix.md): from
-        1e-6 to 1e-4 the Jacobian updates fall from 700 to 453 (deep groove, 1 kN radial) and
-        from 852 to 238 (spindle with radial load); 1e-3 makes the 2.5 kN deep-groove case cut
-        most of its steps.
+        The velocity steps (``eps_velocity`` m/s, ``eps_angular`` rad/s; default
+        :data:`JACOBIAN_VELOCITY_STEP` times the balls' mean speed, in m/s and rad/s alike)
+        follow the bearing's speed because the traction's knee does (its width scales with
+        the entrainment speed, MODEL.md §6b): far below the knee the compiled fast rule's
+        ray switching (steps of ~1e-3 of the traction) swamps the difference quotient, far
+        above it the secant misses the slope. Measured (0.02 s per case): a fixed 1e-6
+        (m/s and rad/s) gave 700 Jacobian updates on the deep groove at 1 kN radial and 852
+        on the spindle with radial load, 1e-4 453 and 238 but 1099 steps for 800 on the deep
+        groove at 2.5 kN radial and 6x the steps at 100 rpm; 1.6e-6 x the balls' speed
+        (1e-5 at 1800 rpm on the reference bearing): 527, 245, 873 for 800, and at 100 rpm no
+        worse than 1e-6.
         """
         pos, rot, vel, wl = self.decode(q, q_t)
+        if eps_velocity is None or eps_angular is None:
+            speed = float(np.mean(np.linalg.norm(vel[self.layout["balls"]], axis=1)))
+            step = max(JACOBIAN_VELOCITY_STEP * speed, 1e-7)
+            eps_velocity = step if eps_velocity is None else eps_velocity
+            eps_angular = step if eps_angular is None else eps_angular
         n6 = 6 * self.n_nodes
         if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel)) and np.all(np.isfinite(wl))):
             return np.full((n6, n6), np.nan)

@@ -54,8 +54,8 @@ class LoadDistribution:
     displacement: np.ndarray  #: inner-race (dx, dy, dz), m
     tilt: np.ndarray  #: inner-race (theta_x, theta_y), rad
     reaction_moment: np.ndarray  #: (M_x, M_y) the shaft must supply when tilt is held, N m
-    centrifugal_force: float  #: m r_p w_c² per ball, N
-    cage_speed: float  #: pure-rolling cage speed used for it, rad/s
+    centrifugal_force: float  #: m r_p w_c² per ball, N (an array when the cage speed is per ball)
+    cage_speed: float  #: cage speed used for it, rad/s (or per ball)
     cage_force: np.ndarray  #: circumferential force the cage puts on each ball, N (along +psi)
     ball_residual: np.ndarray  #: |force balance of each ball| / (max contact load), -
     iterations: int
@@ -137,7 +137,7 @@ class _Geometric:
 
     def ball_residual(self, offsets, x):
         con, _ = self.contacts(offsets, x)
-        force = (self.fc_rate * (self.b.pitch_radius + offsets[:, :1])) * self.e_r
+        force = (np.reshape(self.fc_rate, (-1, 1)) * (self.b.pitch_radius + offsets[:, :1])) * self.e_r
         for side in con.values():
             force = force - side["load"][:, None] * side["normal"]
         return np.stack([np.einsum("ij,ij->i", force, self.e_r), force[:, 2]], axis=1), con
@@ -152,7 +152,7 @@ class _Geometric:
             nn = n[:, :, None] * n[:, None, :]
             s = side["dload"][:, None, None] * nn + (side["load"] / side["distance"])[:, None, None] * (np.eye(3) - nn)
             jac -= np.einsum("zia,zij,zjb->zab", basis, s, basis)
-        jac[:, 0, 0] += self.fc_rate  # the centrifugal force grows with the orbit radius
+        jac[:, 0, 0] += self.fc_rate  # the centrifugal force grows with the orbit radius (scalar or per ball)
         return jac
 
     def initial_offsets(self, x) -> np.ndarray:
@@ -171,9 +171,9 @@ class _Geometric:
         ko = self.b.hertz(self.b.contact_angle, "outer", self.method).stiffness
         share_o = 1.0 / (1.0 + (ko / ki) ** (2.0 / 3.0))  # delta_o / delta_total at equal loads
         c = g_o + (self.to + np.where(total > 0, total * share_o, 0.5 * total))[:, None] * u
-        if self.fc > 0:
+        if np.any(self.fc > 0):
             ko_r = self.b.hertz(0.0, "outer", self.method).stiffness
-            c_out = g_o + (self.to + (self.fc / ko_r) ** (2.0 / 3.0)) * self.e_r
+            c_out = g_o + (self.to + (np.reshape(self.fc, (-1, 1)) / ko_r) ** (2.0 / 3.0)) * self.e_r
             # where the centrifugal position clears the inner groove the ball rides on the
             # outer race alone; starting it between both races at ~zero load (total ~ 0, a
             # race just touching) leaves Newton with a near-singular stiffness
@@ -342,7 +342,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
                             *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
                             max_iter: int = 60, outer_rpm: float = 0.0,
-                            displacement=None, cage_speed: float | None = None) -> LoadDistribution:
+                            displacement=None, cage_speed=None) -> LoadDistribution:
     """Quasi-static load distribution (MODEL.md §4).
 
     Parameters
@@ -372,10 +372,10 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         Prescribe the inner-race displacement (m) and tilt (rad) instead of balancing
         the applied loads (geometric mode): only the balls are solved; the loads are
         then ignored.
-    cage_speed : float, optional
+    cage_speed : float or array of Z floats, optional
         Cage (ball orbital) speed for the centrifugal force, rad/s, e.g. the one a dynamic
-        run measured; default: the nominal pure-rolling speed at ``rpm`` (P19, nominal
-        contact angle).
+        run measured, or each ball's own orbital speed (geometric mode); default: the
+        nominal pure-rolling speed at ``rpm`` (P19, nominal contact angle).
 
     Raises
     ------
@@ -403,8 +403,12 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         cage = bearing.cage_speed(rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0)
     elif isinstance(cage_speed, (int, float, np.floating)) and math.isfinite(cage_speed):
         cage = float(cage_speed)
+    elif (mode == "geometric" and np.ndim(cage_speed) == 1 and len(cage_speed) == bearing.balls
+          and np.all(np.isfinite(np.asarray(cage_speed, dtype=float)))):
+        cage = np.asarray(cage_speed, dtype=float)  # per ball (geometric mode)
     else:
-        raise ValueError(f"cage_speed must be a finite angular speed in rad/s, got {cage_speed!r}")
+        raise ValueError(f"cage_speed must be a finite angular speed in rad/s (or, geometric mode, one per ball), "
+                         f"got {cage_speed!r}")
     centrifugal = bearing.ball_mass * bearing.pitch_radius * cage ** 2
     z = bearing.balls
     psi = 2.0 * np.pi * np.arange(z) / z

@@ -24,13 +24,17 @@ from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .steady import gyroscopic_minimum_axial, steady_state
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range", "hirano_minimum_axial"]
 
 #: Default grid of ``python -m exudyn_bearing skid-map`` (about 5 minutes on 2 cores).
 DEFAULT_AXIAL = (300.0, 800.0, 1500.0, 3000.0)
 DEFAULT_RPM = (900.0, 1800.0)
-DEFAULT_TIME = 0.1
+DEFAULT_TIME = None
+#: Until-settled runs (``time=None``): first length, s, doubled until settled, capped at
+#: :data:`MAX_TIME`.
+FIRST_TIME, MAX_TIME = 0.1, 2.0
 
 
 def parse_range(text: str) -> list[float]:
@@ -67,7 +71,7 @@ class SkidPoint:
     axial: float
     radial: float
     rpm: float
-    time: float
+    time: float | None  #: requested simulated time, s; None: until settled
     cage_slip_percent: float | None = None
     kinematic_cage_slip_percent: float | None = None
     peak_ball_slip: float | None = None  #: largest ball–race slip speed over the last third, m/s
@@ -76,6 +80,8 @@ class SkidPoint:
     settled: bool | None = None
     wall_time_s: float | None = None
     error: str | None = None
+    #: simulated time of the reported run, s (until settled: the last of 0.1, 0.2, ... s)
+    simulated_time: float | None = None
 
     @property
     def key(self):
@@ -89,21 +95,26 @@ def _run_point(args) -> dict:
     try:
         from .runner import simulate
 
-        s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=point.time,
-                     drag=drag, contact_law=law[0] if law else ContactLaw())
+        # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
+        # (each run from scratch: at most twice the cost of the final one)
+        length = point.time if point.time is not None else FIRST_TIME
+        while True:
+            s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=length,
+                         drag=drag, contact_law=law[0] if law else ContactLaw())
+            if point.time is not None or s.settled or length >= MAX_TIME:
+                break
+            length = min(2.0 * length, MAX_TIME)
         res = s.results
         last = res.last(1 / 3)
         peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))
         steady = None
         if point.radial == 0:
-            from .steady import steady_state
-
             state = steady_state(bearing, lubricant, axial=point.axial, rpm=point.rpm, drag=drag,
                                  contact_law=law[0] if law else ContactLaw())
             steady = state.kinematic_cage_slip_percent if state.converged else None
         done = replace(point, cage_slip_percent=s.cage_slip_percent,
                        kinematic_cage_slip_percent=s.kinematic_cage_slip_percent, peak_ball_slip=peak,
-                       settled=s.settled, steady_kinematic_cage_slip_percent=steady)
+                       settled=s.settled, steady_kinematic_cage_slip_percent=steady, simulated_time=length)
     except Exception as err:  # a failed point is reported, the map goes on
         done = replace(point, error=f"{type(err).__name__}: {err}".splitlines()[0][:300])
     done.wall_time_s = _time.perf_counter() - start
@@ -124,7 +135,7 @@ class SkidMap:
     def thresholds(self, level: float = 1.0) -> list[dict]:
         """Per (rpm, radial): the smallest axial load with kinematic cage slip below
         ``level`` %, interpolated linearly between the grid loads around the crossing,
-        and Hirano's F_a,min for comparison."""
+        and Hirano's and Jones' (gyroscopic) F_a,min for comparison."""
         out = []
         groups = sorted({(p.rpm, p.radial) for p in self.points})
         for rpm, radial in groups:
@@ -141,7 +152,8 @@ class SkidMap:
                 if pts and pts[0].kinematic_cage_slip_percent < level:
                     estimate, note = pts[0].axial, "at or below the lightest load"
             out.append(dict(rpm=rpm, radial=radial, minimum_axial=estimate, note=note,
-                            hirano_minimum_axial=hirano_minimum_axial(self.bearing, rpm)))
+                            hirano_minimum_axial=hirano_minimum_axial(self.bearing, rpm),
+                            gyroscopic_minimum_axial=gyroscopic_minimum_axial(self.bearing, rpm)))
         return out
 
     def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, drag: BallDrag | None = REFERENCE_DRAG,
@@ -155,8 +167,6 @@ class SkidMap:
         ends of the bracket (``dynamic_slips``), the dynamic model's own crossing through
         them (``dynamic_minimum_axial``) and whether it lies within the bracket's width of
         the steady one (``dynamic_confirms``)."""
-        from .steady import steady_state
-
         out = []
         for entry in self.thresholds(level):
             pts = sorted((p for p in self.points if p.rpm == entry["rpm"] and p.radial == entry["radial"]
@@ -219,6 +229,13 @@ class SkidMap:
             written.append("skid_map.png")
         return written
 
+    @staticmethod
+    def _note(p) -> str:
+        length = p.simulated_time if p.simulated_time is not None else p.time
+        if p.time is None and not p.settled:
+            return f"not settled after {length:g} s (the cap)"
+        return f"{length:g} s simulated" if length is not None else ""
+
     def markdown(self) -> str:
         lines = ["| rpm | F_r (N) | F_a (N) | kinematic cage slip (%) | steady state (%) | cage slip P19 (%) | "
                  "peak ball slip (m/s) | settled | note |",
@@ -230,10 +247,10 @@ class SkidMap:
                 steady = p.steady_kinematic_cage_slip_percent
                 lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | {p.kinematic_cage_slip_percent:.3f} | "
                              f"{'–' if steady is None else f'{steady:.3f}'} | {p.cage_slip_percent:.3f} | "
-                             f"{p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | |")
+                             f"{p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | {self._note(p)} |")
         lines += ["", "| rpm | F_r (N) | min. F_a for kinematic slip < 1 % (N) | bracket (N) | how | "
-                      "dynamic at the bracket (%) | Hirano 10 Z F_c (N) |",
-                  "|---:|---:|---:|---|---|---|---:|"]
+                      "dynamic at the bracket (%) | Hirano 10 Z F_c (N) | Jones, gyroscopic (N) |",
+                  "|---:|---:|---:|---|---|---|---:|---:|"]
         for t in self.refined or self.thresholds():
             est = f"{t['minimum_axial']:.0f}" if t["minimum_axial"] is not None else "–"
             bracket = "{:.0f}–{:.0f}".format(*t["bracket"]) if "bracket" in t else "–"
@@ -244,7 +261,7 @@ class SkidMap:
                     dyn += f": crossing {t['dynamic_minimum_axial']:.0f} N"
                 dyn += "" if t["dynamic_confirms"] else " (NOT confirmed)"
             lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {bracket} | {t['note']} | {dyn} | "
-                         f"{t['hirano_minimum_axial']:.0f} |")
+                         f"{t['hirano_minimum_axial']:.0f} | {t['gyroscopic_minimum_axial']:.0f} |")
         return "\n".join(lines)
 
     def plot(self, path) -> bool:
@@ -292,10 +309,11 @@ class SkidMap:
         ax.set_yscale("log")
         ax.set_xlim(x_lo - 0.03 * (x_hi - x_lo), x_hi + 0.03 * (x_hi - x_lo))
         b = self.bearing
-        time = sorted({p.time for p in self.points})
+        lengths = sorted({p.simulated_time or p.time or 0.0 for p in self.points})
+        time = [lengths[0], lengths[-1]] if len(lengths) > 2 else lengths
         ax.set(xlabel="axial load F_a (N)", ylabel="kinematic cage slip (%)",
                title=f"Skid-risk map: Z {b.balls}, D {b.ball_diameter * 1e3:g} mm, d_m {b.pitch_diameter * 1e3:g} mm, "
-                     f"free angle {math.degrees(b.contact_angle):.1f}°; {', '.join(f'{t:g}' for t in time)} s per point")
+                     f"free angle {math.degrees(b.contact_angle):.1f}°; {'–'.join(f'{t:g}' for t in time)} s per point")
         ax.title.set_fontsize(9)
         note = "solid line: threshold (band: bracket); dotted: Hirano 10 Z F_c; x: not settled"
         if hirano_outside:
@@ -368,11 +386,14 @@ def _one_thread_per_worker():
 
 
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
-             axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float = DEFAULT_TIME,
+             axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
              drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
              progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True) -> SkidMap:
-    """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) for
-    ``time`` s each and return a :class:`SkidMap`.
+    """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) and return a
+    :class:`SkidMap`. Each point runs ``time`` s, or with ``time=None`` (default) until it
+    settles (:meth:`BearingResults.settled`): 0.1 s, then 0.2, 0.4, ... s from the start,
+    capped at 2 s (``settled`` False when the cap is hit). Pure axial points start from
+    their steady state and settle in the first run.
 
     Parameters
     ----------
@@ -399,9 +420,10 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
                or (low is not None and v < low)]
         if bad:
             raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}")
-    if not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
-        raise ValueError(f"time must be a positive number of seconds, got {time!r}")
-    grid = [SkidPoint(float(a), float(r), float(n), float(time)) for n, r, a in itertools.product(rpm, radial, axial)]
+    if time is not None and not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
+        raise ValueError(f"time must be a positive number of seconds (or None: until settled), got {time!r}")
+    grid = [SkidPoint(float(a), float(r), float(n), None if time is None else float(time))
+            for n, r, a in itertools.product(rpm, radial, axial)]
     if not grid:
         raise ValueError("axial, radial, rpm: the grid is empty")
     if any(p.axial == 0 and p.radial == 0 for p in grid):

@@ -145,3 +145,26 @@ def test_grid_is_validated_before_any_run(kw, name, tmp_path):
     with pytest.raises(ValueError, match=name):
         skid_map(**args)
     assert not (tmp_path / "points.jsonl").exists()
+
+
+def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
+    """time=None: 0.1 s, 0.2 s, ... until settled, capped. With the first run and the cap
+    shrunk to 2 and 8 ms (shorter than the 50 ms a run needs to count as settled), the
+    point is run at 2, 4 and 8 ms and reported unsettled at the cap; the markdown says so."""
+    monkeypatch.setattr(skidmap, "FIRST_TIME", 0.002)
+    monkeypatch.setattr(skidmap, "MAX_TIME", 0.008)
+    lengths = []
+    from exudyn_bearing import runner
+
+    original = runner.simulate
+
+    def counting(*args, **kw):
+        lengths.append(kw["time"])
+        return original(*args, **kw)
+
+    monkeypatch.setattr(runner, "simulate", counting)
+    table = skid_map(axial=[1300.0], rpm=[1800.0], time=None, out=tmp_path, workers=1, progress=None, refine=False)
+    assert lengths == [0.002, 0.004, 0.008]
+    point = table.points[0]
+    assert point.simulated_time == 0.008 and point.settled is False and point.time is None
+    assert "not settled after 0.008 s (the cap)" in (tmp_path / "skid_map.md").read_text()

@@ -39,12 +39,13 @@ def test_raceway_control_has_no_spin_at_the_controlling_contact(control, zero, a
 # no contact damping in the check: with the inner race displaced radially the balls orbit
 # eccentrically to its groove, so their normal approach has a rate and damping adds ~0.4 N
 @pytest.mark.parametrize("kw", [dict(axialForce=200.0), dict(axialForce=2200.0, radialForce=2000.0,
-                                                              contactLaw=ContactLaw(damping_ratio=0.0))])
+                                                              contactLaw=ContactLaw(damping_ratio=0.0),
+                                                              initialControl="outer")])
 def test_rolling_start_is_in_radial_balance(kw):
     """Each ball's normal contact forces balance the centrifugal force of its initial orbit,
-    m v²/r_c (the quasi-static solve iterated to the balls' mean pure-rolling orbital speed,
-    which all balls start with, as the cage holds them): radial residual below 1e-4 of the
-    outer load. With radial load the controlling contact still rolls without slip or spin."""
+    m v²/r_c (the quasi-static solve iterated to each ball's pure-rolling orbital speed):
+    radial residual below 1e-4 of the outer load. With radial load the balls orbit at
+    different speeds and the controlling contact still rolls without spin."""
     handle, state = _start_state(**kw)
     mass = handle.bearing.ball_mass
     c = state.ball_position - handle.connector.origin
@@ -57,7 +58,7 @@ def test_rolling_start_is_in_radial_balance(kw):
     assert np.abs(residual).max() < 1e-4 * state.outer_forces.normal_load.max()
     if "radialForce" in kw:
         speed = np.linalg.norm(state.ball_velocity, axis=1) / r_c
-        np.testing.assert_allclose(speed, speed.mean(), rtol=1e-9)  # one common orbital speed
+        assert np.ptp(speed) > 1e-3 * speed.mean()  # each ball its own pure-rolling orbit
         # (to 1e-6: the displaced inner race gives its normals a small circumferential part)
         controlled = np.minimum(np.abs(state.inner.spin), np.abs(state.outer.spin))
         assert controlled.max() < 1e-6 * np.abs(state.inner.spin).max()
