@@ -35,6 +35,13 @@ import numpy as np
 if "OMP_WAIT_POLICY" not in os.environ:
     os.environ.setdefault("GOMP_SPINCOUNT", "3000")
 
+from pathlib import Path  # noqa: E402
+
+from .kernel_cache import drop_stale  # noqa: E402
+
+# the kernels inline functions of traction_fast.py: recompile when any contact/ source changed
+drop_stale(__file__, Path(__file__).parent.glob("*.py"))
+
 from llvmlite import ir  # noqa: E402
 from numba import njit, prange, types  # noqa: E402
 from numba.extending import intrinsic  # noqa: E402

@@ -10,11 +10,16 @@ path, the reference): a global force F enters as F, a global torque tau of a
 from __future__ import annotations
 
 import threading
+from pathlib import Path
 
 import numpy as np
 from numba import njit
 
 from contact import compiled as kernels
+from contact.kernel_cache import drop_stale
+
+# the one-state kernel below calls the contact/ kernels: recompile it when they changed
+drop_stale(__file__, [__file__, *Path(kernels.__file__).parent.glob("*.py")])
 from contact.ballrace import CROOK_MODELS
 
 __all__ = ["CompiledForces", "supports"]

@@ -307,7 +307,8 @@ class SkidMap:
         ax.annotate("1 % (skid threshold)", (x_lo, 1.0), xytext=(2, -11), textcoords="offset points", fontsize=8,
                     color="grey")
         ax.set_yscale("log")
-        ax.set_xlim(x_lo - 0.03 * (x_hi - x_lo), x_hi + 0.03 * (x_hi - x_lo))
+        pad = 0.03 * (x_hi - x_lo) if x_hi > x_lo else 0.1 * max(abs(x_lo), 1.0)
+        ax.set_xlim(x_lo - pad, x_hi + pad)
         b = self.bearing
         lengths = sorted({p.simulated_time or p.time or 0.0 for p in self.points})
         time = [lengths[0], lengths[-1]] if len(lengths) > 2 else lengths
@@ -319,7 +320,8 @@ class SkidMap:
         if hirano_outside:
             note += "\nHirano beyond the range: " + ", ".join(hirano_outside)
         ax.text(0.01, 0.01, note, transform=ax.transAxes, fontsize=7, va="bottom")
-        ax.legend(fontsize=8)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(path, dpi=120)
         plt.close(fig)
