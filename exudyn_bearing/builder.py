@@ -344,7 +344,13 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     def force_user_function(mbs_, t, itemNumber, q, q_t):
         return connector.residual_forces(t, q, q_t)
 
-    contact = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, forceUserFunction=force_user_function))
+    def jacobian_user_function(mbs_, t, itemNumber, q, q_t, f_q, f_qt):
+        return connector.jacobian(t, np.asarray(q) + ref, np.asarray(q_t), f_q, f_qt)
+
+    # the block Jacobian is installed here, so a scene solved by Exudyn's own SolveDynamic
+    # (implicit solvers) gets it too; run_solver(jacobian='exudyn') removes it
+    contact = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, forceUserFunction=force_user_function,
+                                              jacobianUserFunction=jacobian_user_function))
     sensor = None
     if recordStates:
         indices = []

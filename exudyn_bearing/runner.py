@@ -174,19 +174,15 @@ _ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this st
 
 def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverSettings()) -> RunInfo:
     """Integrate an assembled ``mbs`` containing the given bearing handles to
-    ``end_time`` s; installs the block Jacobian on their connectors (implicit solvers)
-    and checks the result (raises :class:`BearingSimulationError` on divergence)."""
+    ``end_time`` s (their connectors carry the block Jacobian from the builder;
+    ``jacobian='exudyn'`` removes it) and check the result (raises
+    :class:`BearingSimulationError` on divergence)."""
     import exudyn as exu
 
     settings = settings.resolved(handles)
-    if settings.implicit and settings.jacobian == "block":
-        for h in handles:
-            con, ref = h.connector, h.connector.reference
-
-            def jac(mbs_, t, itemNumber, q, q_t, f_q, f_qt, con=con, ref=ref):
-                return con.jacobian(t, np.asarray(q) + ref, np.asarray(q_t), f_q, f_qt)
-
-            mbs.SetObjectParameter(h.contactObject, "jacobianUserFunction", jac)
+    for h in handles:  # the builder installed the block Jacobian; 'exudyn' takes Exudyn's own
+        if settings.jacobian == "exudyn":
+            mbs.SetObjectParameter(h.contactObject, "jacobianUserFunction", 0)
     for h in handles:
         h.connector.first_non_finite = None
     s = _exudyn_settings(settings, end_time)

@@ -1,0 +1,26 @@
+"""A user's ordinary Exudyn scene: the bearing added to ``mbs`` and solved by Exudyn's own
+``exu.SolveDynamic`` with default ``SimulationSettings`` (issue 16). The builder installs
+the block Jacobian, so the plain solve runs the fast path (speed: benchmarks/plain_solve.py,
+1.0x run_solver); here: it runs, writes Exudyn's solution file, and stays on the steady
+state the package computes independently of the integration."""
+import pytest
+
+exu = pytest.importorskip("exudyn")
+
+from exudyn_bearing import CreateAngularContactBearing, races, steady_state  # noqa: E402
+
+
+def test_plain_solve_dynamic_with_default_settings(tmp_path):
+    mbs = exu.SystemContainer().AddSystem()
+    handle = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=1300.0, show=False)
+    assert mbs.GetObjectParameter(handle.contactObject, "jacobianUserFunction") != 0
+    mbs.Assemble()
+    ss = exu.SimulationSettings()  # Exudyn's defaults: generalized-alpha, Newton tolerance 1e-8
+    ss.timeIntegration.endTime = 0.01
+    ss.timeIntegration.numberOfSteps = 100
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.name = str(tmp_path / "solution.txt")
+    assert exu.SolveDynamic(mbs, ss)
+    assert (tmp_path / "solution.txt").stat().st_size > 0  # mbs.SolutionViewer has a solution to show
+    slip = handle.Results(mbs).summary()["kinematic_cage_slip_percent"]
+    assert slip == pytest.approx(steady_state(axial=1300.0, rpm=1800.0).kinematic_cage_slip_percent, abs=0.02)
