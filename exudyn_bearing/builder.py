@@ -200,6 +200,12 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     for name, race in (("innerRace", inner), ("outerRace", outer)):
         if not isinstance(race, Race):
             raise ValueError(f"{name} must be a races.Race, got {race!r}")
+        if race.kind == "body":  # checked before anything is added to mbs
+            node_type = mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"]
+            if node_type != "RigidBodyRotVecLG":
+                raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing needs a "
+                                 "rotation-vector Lie-group node: create that body with "
+                                 "nodeType=exu.NodeType.RotationRotationVector")
     axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
     axial, radial = float(axial_of_t(0.0)), float(radial_of_t(0.0))
     loaded = bool(axial or radial) or callable(axialForce) or callable(radialForce)
@@ -330,10 +336,6 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         race_items[name] = (body, node)
         layout[name] = len(nodes)
         nodes.append(node)
-    for node in nodes:
-        if mbs.GetNode(node)["nodeType"] != "RigidBodyRotVecLG":
-            raise ValueError(f"innerRace/outerRace: OnBody node {node} must be a NodeRigidBodyRotVecLG "
-                             "(create the body with nodeType=exu.NodeType.RotationRotationVector)")
     connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
                                  layout, origin, frame, race_frames,
                                  lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven)

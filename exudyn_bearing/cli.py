@@ -191,10 +191,34 @@ def _traction_option(p) -> None:
                         "limiting shear stress (default), crook = the paper's pure Crook law")
 
 
+class _DefaultsFormatter(argparse.HelpFormatter):
+    """Appends "(default: X)" where an option has a default and its help does not name one."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        if (action.default not in (None, False, argparse.SUPPRESS) and "default" not in text
+                and action.option_strings):
+            text += " (default: %(default)s)"
+        return text
+
+
 def build_parser() -> argparse.ArgumentParser:
+    from importlib.metadata import PackageNotFoundError, version
+
     parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
                                      description="Skidding analysis of angular-contact ball bearings with Exudyn.")
+    try:
+        versions = f"exudyn-bearing {version('exudyn-bearing')} (exudyn {version('exudyn')})"
+    except PackageNotFoundError:
+        versions = "exudyn-bearing (not installed)"
+    parser.add_argument("--version", action="version", version=versions)
     sub = parser.add_subparsers(dest="command", required=True)
+    _add_parser = sub.add_parser
+
+    def add_parser(*args, **kw):  # every command's --help shows the defaults
+        return _add_parser(*args, formatter_class=_DefaultsFormatter, **kw)
+
+    sub.add_parser = add_parser
     p = sub.add_parser("loads", help="quasi-static load distribution (MODEL.md §4)")
     p.add_argument("--axial", type=float, default=0.0, help="axial force on the inner race, N")
     p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
@@ -215,7 +239,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
     p.add_argument("--time", type=float, default=0.05, help="simulated time, s")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
-    p.add_argument("--solver", choices=SOLVERS, default="generalized-alpha")
+    p.add_argument("--solver", choices=SOLVERS, default="generalized-alpha", help="time integrator")
     p.add_argument("--step", type=float, default=None,
                    help="time step, s (default: 1e-4, less for small, stiff balls; docs/MODEL.md §10a)")
     p.add_argument("--output-step", type=float, default=5e-4, help="output period, s")

@@ -20,6 +20,21 @@ from contact.kernel_cache import drop_stale
 
 # the one-state kernel below calls the contact/ kernels: recompile it when they changed
 drop_stale(__file__, [__file__, *Path(kernels.__file__).parent.glob("*.py")])
+_ANNOUNCED = []
+
+
+def _announce_compilation():
+    """One line on stderr before the one-time compilation of the kernels (no cache yet)."""
+    import sys
+
+    if _ANNOUNCED:
+        return
+    _ANNOUNCED.append(True)
+    cached = [d for d in (Path(__file__).parent / "__pycache__", Path(kernels.__file__).parent / "__pycache__")
+              if any(d.glob("compiled.*.nbi"))]
+    if len(cached) < 2:
+        print("exudyn-bearing: compiling the contact kernels (once, about 20-60 s; cached afterwards)",
+              file=sys.stderr, flush=True)
 from contact.ballrace import CROOK_MODELS
 
 __all__ = ["CompiledForces", "supports"]
@@ -326,6 +341,7 @@ class CompiledForces:
         self.penetration, self.load = np.empty(2 * b.balls), np.empty(2 * b.balls)
         # compile (first use) or load the cached machine code now, not inside the solver's
         # first step (~0.3 s cached, ~20 s the very first time)
+        _announce_compilation()
         n = con.n_nodes
         rot = np.repeat(np.eye(3)[None, None], 2 * n, axis=1).reshape(2, n, 3, 3)
         pos = np.zeros((2, n, 3))

@@ -446,3 +446,15 @@ def test_bad_input_is_an_error_message_not_a_traceback(args, names, tmp_path):
     assert "Traceback" not in proc.stderr, proc.stderr[-2000:]
     assert re.search(r"^error: ", proc.stderr, re.M), proc.stderr[-2000:]
     assert re.search(names, proc.stderr, re.I), proc.stderr[-2000:]
+
+
+def test_version_and_help_show_defaults(tmp_path):
+    from importlib.metadata import version
+
+    proc, _ = cli("--version", cwd=tmp_path)
+    assert proc.returncode == 0 and version("exudyn-bearing") in proc.stdout and version("exudyn") in proc.stdout
+    proc, _ = cli("simulate", "--help", cwd=tmp_path)
+    text = " ".join(proc.stdout.split())
+    assert "(default: 1800.0)" in text and "(default: generalized-alpha)" in text  # --rpm, --solver
+    proc, _ = cli("skid-map", "--help", cwd=tmp_path)
+    assert "until settled" in " ".join(proc.stdout.split())

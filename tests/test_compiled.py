@@ -270,3 +270,16 @@ def test_land_kernel_is_the_numpy_land_force():
         d = cage_o - ro
         np.testing.assert_allclose(e, np.linalg.norm(d - np.sum(d * ax, axis=1, keepdims=True) * ax, axis=1),
                                    rtol=1e-12)
+
+
+def test_compilation_is_announced_once_when_no_cache_exists(monkeypatch, tmp_path, capsys):
+    """A fresh install (no numba cache next to the glue module) says what the first, slow
+    model build is doing; a second build does not repeat it."""
+    from exudyn_bearing import compiled as glue
+
+    monkeypatch.setattr(glue, "__file__", str(tmp_path / "compiled.py"))
+    monkeypatch.setattr(glue, "_ANNOUNCED", [])
+    glue._announce_compilation()
+    glue._announce_compilation()
+    err = capsys.readouterr().err
+    assert err.count("compiling the contact kernels") == 1

@@ -187,6 +187,12 @@ def _body(mbs, node_type):
                                nodeType=node_type)
 
 
+def exu_node_type(name):
+    import exudyn as exu
+
+    return getattr(exu.NodeType, name)
+
+
 def _tait_bryan_shaft(mbs):
     import exudyn as exu
 
@@ -218,10 +224,13 @@ BUILDER = [
                  "innerRaceDisplacement", True, id="innerRaceDisplacement-on-Fixed"),
     pytest.param(dict(axialForce=1300.0, initialControl="both"), "initialControl", True, id="initialControl"),
     # the node type is checked after the balls and race bodies are created: items remain
-    pytest.param(lambda mbs: dict(innerRace=races.OnBody(_tait_bryan_shaft(mbs))), "innerRace", False,
+    pytest.param(lambda mbs: dict(innerRace=races.OnBody(_tait_bryan_shaft(mbs))), "innerRace.*nodeType", True,
                  id="innerRace-OnBody-node-type"),
-    pytest.param(lambda mbs: dict(outerRace=races.OnBody(_tait_bryan_shaft(mbs))), "outerRace", False,
+    pytest.param(lambda mbs: dict(outerRace=races.OnBody(_tait_bryan_shaft(mbs))), "outerRace.*nodeType", True,
                  id="outerRace-OnBody-node-type"),
+    # Exudyn's default node type (CreateRigidBody without nodeType): Euler parameters
+    pytest.param(lambda mbs: dict(innerRace=races.OnBody(_body(mbs, exu_node_type("RotationEulerParameters")))),
+                 "innerRace.*nodeType", True, id="innerRace-OnBody-default-node-type"),
 ]
 
 
