@@ -30,6 +30,10 @@ from .races import Driven, Fixed, Race
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
 
+#: Outputs :meth:`BearingHandle.AddSensors` can record.
+SENSOR_OUTPUTS = ("cageSpeed", "cageSlip", "kinematicCageSlip", "attitudeXZ", "attitudeYZ")
+
+
 @dataclass
 class BearingHandle:
     """Item indices, sensors and result accessors of a bearing added to an ``mbs``."""
@@ -69,6 +73,51 @@ class BearingHandle:
         from .steprule import NOMINAL_STEP, recommended_step
 
         return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
+
+    def AddSensors(self, mbs, outputs=SENSOR_OUTPUTS, storeInternal: bool = True, writeToFile: bool = False,
+                   fileNames: dict | None = None) -> dict:
+        """Exudyn sensors of the bearing's outputs (``SensorUserFunction``), for
+        ``mbs.PlotSensor``, live views and sensor files; nothing is evaluated unless a
+        scene asks for them. Outputs (MODEL.md §7): 'cageSpeed' (rad/s), 'cageSlip' (P19,
+        %), 'kinematicCageSlip' (%, mean over balls), 'attitudeXZ' and 'attitudeYZ' (ball
+        attitude angles, deg, mean over balls). All requested outputs share one evaluation
+        of the connector per written time. Returns {output: sensor number}; call before
+        ``mbs.Assemble()``. The write period is ``simulationSettings.solution.sensors.writePeriod``."""
+        from exudyn.utilities import SensorUserFunction
+
+        from .outputs import compute_results
+
+        unknown = [o for o in outputs if o not in SENSOR_OUTPUTS]
+        if unknown or not outputs:
+            raise ValueError(f"outputs: choose from {SENSOR_OUTPUTS}, got {list(outputs)!r}")
+        nodes, ref, indices, cache = self.nodeNumbers, self.connector.reference, [], {}
+
+        def evaluate(mbs_, t, configuration):
+            key = (float(t), int(configuration))
+            if key not in cache:
+                if not indices:
+                    for node in nodes:
+                        start = mbs_.GetNodeODE2Index(node)
+                        indices.extend(range(start, start + 6))
+                q = np.asarray(mbs_.systemData.GetODE2Coordinates(configuration=configuration))[indices] + ref
+                q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=configuration))[indices]
+                res = compute_results(self, np.array([t]), q[None], q_t[None])
+                cache.clear()
+                cache[key] = {"cageSpeed": res.cage_speed[0], "cageSlip": res.cage_slip_percent[0],
+                              "kinematicCageSlip": res.kinematic_cage_slip_percent[0],
+                              "attitudeXZ": float(np.degrees(np.mean(res.attitude_xz[0]))),
+                              "attitudeYZ": float(np.degrees(np.mean(res.attitude_yz[0])))}
+            return cache[key]
+
+        sensors = {}
+        for name in outputs:
+            def user_function(mbs_, t, sensorNumbers, factors, configuration, name=name):
+                return [float(evaluate(mbs_, t, configuration)[name])]
+
+            kw = {"fileName": fileNames[name]} if fileNames and name in fileNames else {}
+            sensors[name] = mbs.AddSensor(SensorUserFunction(sensorUserFunction=user_function, storeInternal=storeInternal,
+                                                             writeToFile=writeToFile, name=f"bearing_{name}", **kw))
+        return sensors
 
     def Results(self, mbs, stride: int = 1):
         """Bearing outputs per recorded step (:class:`exudyn_bearing.outputs.BearingResults`)."""

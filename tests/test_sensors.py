@@ -1,0 +1,39 @@
+"""The bearing's outputs as Exudyn sensors (BearingHandle.AddSensors), for PlotSensor and
+live views, at no cost unless asked for."""
+import numpy as np
+import pytest
+
+exu = pytest.importorskip("exudyn")
+
+from exudyn.utilities import SensorNode  # noqa: E402
+
+from exudyn_bearing import CreateAngularContactBearing, races  # noqa: E402
+
+
+def test_sensors_follow_the_run_and_cost_nothing_unless_added():
+    mbs = exu.SystemContainer().AddSystem()
+    handle = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=2200.0, radialForce=2000.0,
+                                         show=False)
+    assert mbs.systemData.NumberOfSensors() == 1  # the state recorder only
+    sensors = handle.AddSensors(mbs)
+    # Exudyn's own node sensor of the cage: an independent reading of the cage speed
+    node = mbs.AddSensor(SensorNode(nodeNumber=handle.cageNode, storeInternal=True,
+                                    outputVariableType=exu.OutputVariableType.AngularVelocity))
+    mbs.Assemble()
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.endTime = 0.005
+    ss.timeIntegration.numberOfSteps = 50
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.write = False
+    ss.solution.sensors.writePeriod = 1e-3
+    exu.SolveDynamic(mbs, ss)
+    data = {name: np.asarray(mbs.GetSensorStoredData(s)) for name, s in sensors.items()}
+    omega = np.asarray(mbs.GetSensorStoredData(node))
+    np.testing.assert_allclose(data["cageSpeed"][:, 1], omega[:, 3], rtol=1e-9)  # bearing axis = global z
+    res = handle.Results(mbs)
+    for name, series in (("kinematicCageSlip", res.kinematic_cage_slip_percent), ("cageSlip", res.cage_slip_percent),
+                         ("attitudeXZ", np.degrees(res.attitude_xz.mean(axis=1)))):
+        at = np.searchsorted(res.time, data[name][-1, 0] - 1e-12)
+        assert data[name][-1, 1] == pytest.approx(series[at], rel=1e-9), name
+    with pytest.raises(ValueError, match="outputs"):
+        handle.AddSensors(mbs, outputs=("cageVelocity",))
