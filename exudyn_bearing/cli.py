@@ -179,8 +179,10 @@ def _render(args) -> int:
 
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
+    setup = _setup(args.bearing)
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
-                       frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction))
+                       frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction),
+                       bearing=setup.bearing, lubricant=setup.lubricant)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 
@@ -268,6 +270,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--backend", choices=("auto", "opengl", "raytracer"), default="auto",
                    help="auto: OpenGL with an X display (e.g. xvfb-run), else the raytracer")
     p.add_argument("--out", required=True, help="output directory")
+    p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
     p.set_defaults(func=_render)
 

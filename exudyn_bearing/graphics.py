@@ -192,9 +192,11 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
         for k, state in enumerate(frames):
             if state is not None:
                 t, q, q_t = state
-                mbs.systemData.SetODE2Coordinates(list(q), configuration=exu.ConfigurationType.Visualization)
-                mbs.systemData.SetODE2Coordinates_t(list(q_t), configuration=exu.ConfigurationType.Visualization)
-                mbs.systemData.SetTime(t, exu.ConfigurationType.Visualization)
+                # the raytracer draws the current configuration, OpenGL the visualization one
+                for config in (exu.ConfigurationType.Current, exu.ConfigurationType.Visualization):
+                    mbs.systemData.SetODE2Coordinates(list(q), configuration=config)
+                    mbs.systemData.SetODE2Coordinates_t(list(q_t), configuration=config)
+                    mbs.systemData.SetTime(t, config)
                 mbs.SendRedrawSignal()
             path = out / f"{prefix}{k:04d}.png"
             if backend == "opengl":
@@ -218,8 +220,9 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
 
 
 def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto", contact_law=None):
-    """Simulate the reference bearing (inner race driven at ``rpm``, outer race fixed) for
+               backend="auto", contact_law=None, bearing=None, lubricant=None):
+    """Simulate ``bearing`` (default: the reference bearing; ``lubricant`` likewise; inner race
+    driven at ``rpm``, outer race fixed) for
     ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
     the run (the CLI's ``render`` command); ``contact_law`` a
     :class:`contact.ballrace.ContactLaw` (default: the builder's). Returns the written paths."""
@@ -234,6 +237,7 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
     kw = {} if contact_law is None else dict(contactLaw=contact_law)
+    kw.update({k: v for k, v in (("bearing", bearing), ("lubricant", lubricant)) if v is not None})
     h = CreateAngularContactBearing(mbs, innerRace=Driven(rpm), outerRace=Fixed(), axialForce=axial,
                                     radialForce=radial, **kw)
     AddBearingGraphics(mbs, h)

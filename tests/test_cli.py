@@ -342,8 +342,6 @@ def test_render_raytracer_writes_frames(raytraced):
         assert_real_png(f, min_bytes=20_000, min_size=(800, 600))  # the default 800 x 600
 
 
-@pytest.mark.xfail(strict=True, reason="render: every raytraced frame is the run's last state (byte-identical "
-                   "PNGs, all labelled 'time = <end>'); the replayed visualization state is not drawn")
 def test_render_frames_show_different_states(raytraced):
     _, files = raytraced
     first, last = (f.read_bytes() for f in (files[0], files[-1]))
@@ -458,3 +456,16 @@ def test_version_and_help_show_defaults(tmp_path):
     assert "(default: 1800.0)" in text and "(default: generalized-alpha)" in text  # --rpm, --solver
     proc, _ = cli("skid-map", "--help", cwd=tmp_path)
     assert "until settled" in " ".join(proc.stdout.split())
+
+
+def test_render_takes_a_bearing_file(tmp_path):
+    from exudyn_bearing import Bearing, save_bearing
+
+    deep = Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                  inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+    save_bearing(deep, tmp_path / "deep.toml")
+    proc, _ = cli("render", "--axial", "200", "--radial", "1000", "--rpm", "3000", "--time", "0.0005", "--frames", "1",
+                  "--backend", "raytracer", "--bearing", "deep.toml", "--out", "r", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    (frame,) = sorted((tmp_path / "r").glob("*.png"))
+    assert_real_png(frame, min_bytes=10_000)
