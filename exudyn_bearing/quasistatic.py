@@ -335,7 +335,22 @@ def _centred_radial_start(bearing: Bearing, radial: float, hertz_method: str) ->
     q = 5.0 * radial / bearing.balls
     deflection = sum((q / bearing.hertz(0.0, race, hertz_method).stiffness) ** (2.0 / 3.0)
                      for race in ("inner", "outer"))
+    if radial == 0:
+        return np.array([0.0, 0.0, z_o - z_i])
     return np.array([max(clearance, 0.0) + deflection, 0.0, z_o - z_i])
+
+
+def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> float:
+    """Axial inner-race shift from the centred grooves that carries ``axial`` on a bearing
+    without radial play, m: with A = (f_i + f_o - 1) D the groove-centre distance, a shift s
+    gives sin a ~ s/A and a deflection ~ s²/(2A); Q = F_a/(Z sin a) = K (s²/2A)^1.5 gives
+    s = (F_a A (2A)^1.5 / (Z K))^(1/4), K the series Hertz stiffness at a = 0."""
+    if axial <= 0:
+        return 0.0
+    a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    k_i, k_o = (bearing.hertz(0.0, race, hertz_method).stiffness for race in ("inner", "outer"))
+    k = (k_i ** (-2.0 / 3.0) + k_o ** (-2.0 / 3.0)) ** -1.5
+    return (axial * a * (2.0 * a) ** 1.5 / (bearing.balls * k)) ** 0.25
 
 
 def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float = 0.0, rpm: float = 0.0,
@@ -444,13 +459,13 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     elif axial > 0 or hold_axial:
         try:
             x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
-        except QuasiStaticError:
-            # fixed angles cannot carry this radial load, full grooves may (small axial on a
-            # deep-groove bearing): start centred and let the geometric balance move axially
-            if radial == 0 or bearing.contact_angle > DEEP_GROOVE_MAX_ANGLE:
+        except (QuasiStaticError, ZeroDivisionError):
+            # fixed angles cannot carry this radial load (or there is no free angle: zero
+            # clearance), full grooves may: start centred and let the geometric balance move
+            if bearing.contact_angle > DEEP_GROOVE_MAX_ANGLE:
                 raise
             x[:3] = _centred_radial_start(bearing, radial, hertz_method)
-            x[2] = 0.0 if hold_axial else x[2]
+            x[2] = 0.0 if hold_axial else x[2] + _axial_shift_estimate(bearing, axial, hertz_method)
     elif radial > 0 and bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE:
         x[:3] = _centred_radial_start(bearing, radial, hertz_method)
     free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])

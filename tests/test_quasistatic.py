@@ -353,3 +353,27 @@ def test_deep_groove_small_axial_with_large_radial():
     res = solve_load_distribution(brg, axial=200.0, radial=2500.0, rpm=3000)
     np.testing.assert_allclose(-res.race_force, [2500.0, 0.0, 200.0], atol=1e-6 * 2500)
     assert res.inner_contact_angle.max() > 0
+
+
+def test_zero_clearance_deep_groove_under_axial_load():
+    """No radial play (free contact angle 0): an axial load alone turns the contacts to the
+    angle a with Z K (A (1/cos a - 1))^1.5 sin a = F_a (A = (f_i + f_o - 1) D, K the series
+    stiffness at that angle), solved here by bisection; it used to divide by sin 0."""
+    from exudyn_bearing import Bearing
+
+    brg = Bearing.from_clearance(diametral_clearance=0.0, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                 inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+    fa = 200.0
+    a_len = (brg.inner_conformity + brg.outer_conformity - 1.0) * brg.ball_diameter
+
+    def k_series(alpha):
+        k_i, k_o = (brg.hertz(alpha, race).stiffness for race in ("inner", "outer"))
+        return (k_i ** (-2 / 3) + k_o ** (-2 / 3)) ** -1.5
+
+    def excess(alpha):
+        return brg.balls * k_series(alpha) * (a_len * (1 / math.cos(alpha) - 1)) ** 1.5 * math.sin(alpha) - fa
+
+    alpha = optimize.brentq(excess, 1e-3, 0.6)
+    res = solve_load_distribution(brg, axial=fa, rpm=0)
+    np.testing.assert_allclose(res.inner_contact_angle, alpha, atol=2e-3)  # inner/outer Hertz differ slightly
+    np.testing.assert_allclose(res.inner_load, fa / (brg.balls * math.sin(alpha)), rtol=5e-3)
