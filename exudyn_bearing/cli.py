@@ -149,7 +149,10 @@ def _skid_map(args) -> int:
             from dask.distributed import Client
         except ImportError:
             raise ValueError("--scheduler needs dask[distributed]: pip install -e .[dask]") from None
-        client = Client(args.scheduler)
+        try:
+            client = Client(args.scheduler, timeout="10s")
+        except (OSError, TimeoutError) as err:
+            raise ValueError(f"--scheduler: cannot reach {args.scheduler} ({str(err).splitlines()[0][:120]})") from None
     print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
           f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
@@ -299,7 +302,14 @@ def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return args.func(args)
+        code = args.func(args)
+        sys.stdout.flush()  # a closed pipe shows here, not as an error at interpreter exit
+        return code
+    except BrokenPipeError:  # e.g. `loads ... | head`: the reader went away, nothing to report
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except ValueError as err:
         parser.exit(2, f"error: {err}\n")
     except RuntimeError as err:  # solver failures carry their own explanation

@@ -431,8 +431,15 @@ BAD_INPUT = [
     pytest.param(["render", "--time", "-1", "--out", "r"], r"\btime\b",
                  id="render-negative-time"),
     pytest.param(["skid-map", "--axial", "-5", "--rpm", "1800", "--time", "0.002", "--out", "m", "--workers", "1"],
-                 r"axial",
-                 id="skid-map-all-points-failed"),
+                 r"axial", id="skid-map-negative-load"),
+    pytest.param(["skid-map", "--axial", "3000:1300:3", "--rpm", "1800", "--time", "0.002", "--out", "m"],
+                 r"3000:1300:3", id="skid-map-reversed-range"),
+    pytest.param(["skid-map", "--axial", "1300,nan", "--rpm", "1800", "--time", "0.002", "--out", "m"],
+                 r"nan", id="skid-map-nan-load"),
+    pytest.param(["skid-map", "--axial", "1e9", "--rpm", "1800", "--time", "0.002", "--out", "m", "--workers", "1",
+                  "--no-refine"], r"1 of 1 points failed", id="skid-map-point-failed"),
+    pytest.param(["skid-map", "--axial", "1300", "--rpm", "1800", "--time", "0.002", "--out", "m", "--scheduler",
+                  "tcp://127.0.0.1:1"], r"--scheduler", id="skid-map-unreachable-scheduler"),
 ]
 
 
@@ -469,3 +476,12 @@ def test_render_takes_a_bearing_file(tmp_path):
     assert proc.returncode == 0, proc.stderr[-3000:]
     (frame,) = sorted((tmp_path / "r").glob("*.png"))
     assert_real_png(frame, min_bytes=10_000)
+
+
+def test_output_into_a_closed_pipe_is_not_an_error(tmp_path):
+    """`loads ... | head -1`: the reader closes the pipe early; no BrokenPipeError traceback."""
+    proc = subprocess.Popen([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--rpm", "1800"],
+                            cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc.stdout.close()  # before the child writes anything (it takes ~1 s to start)
+    _, err = proc.communicate(timeout=120)
+    assert "Traceback" not in err and "BrokenPipe" not in err, err[-2000:]

@@ -319,19 +319,20 @@ def test_cli_json():
     assert bad.returncode == 2 and "axial" in bad.stderr
 
 
-def _deep_groove():
+def _deep_groove(clearance=10e-6):
     from exudyn_bearing import Bearing
 
-    return Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+    return Bearing.from_clearance(diametral_clearance=clearance, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
                                   inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
 
 
-def test_deep_groove_radial_load_alone_is_stribeck_with_clearance():
+@pytest.mark.parametrize("pd", [10e-6, 0.0])
+def test_deep_groove_radial_load_alone_is_stribeck_with_clearance(pd):
     """A deep-groove bearing carries a radial load with its grooves centred: the loads
     follow the discrete Stribeck sum with diametral clearance P_d (Harris, Rolling Bearing
     Analysis, ch. 7): Q_j = K (delta_r cos psi_j - P_d/2)^1.5, sum Q_j cos psi_j = F_r,
-    K the series stiffness of both contacts at zero contact angle."""
-    brg, fr, pd = _deep_groove(), 2500.0, 10e-6
+    K the series stiffness of both contacts at zero contact angle (P_d = 0: free angle 0)."""
+    brg, fr = _deep_groove(pd), 2500.0
     res = solve_load_distribution(brg, radial=fr, rpm=0)
     k_i, k_o = (brg.hertz(0.0, race).stiffness for race in ("inner", "outer"))
     k = (k_i ** (-2 / 3) + k_o ** (-2 / 3)) ** -1.5
@@ -340,7 +341,7 @@ def test_deep_groove_radial_load_alone_is_stribeck_with_clearance():
     def loads(dr):
         return k * np.maximum(dr * np.cos(psi) - pd / 2, 0.0) ** 1.5
 
-    dr = optimize.brentq(lambda d: loads(d) @ np.cos(psi) - fr, pd / 2, 1e-3)
+    dr = optimize.brentq(lambda d: loads(d) @ np.cos(psi) - fr, pd / 2 + 1e-12, 1e-3)
     np.testing.assert_allclose(res.inner_load, loads(dr), rtol=5e-3, atol=1e-6 * fr)
     assert abs(res.race_force[2]) < 1e-6 * fr  # no axial force left on the race
     assert np.degrees(np.abs(res.inner_contact_angle)).max() < 0.5
