@@ -172,13 +172,21 @@ _ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this st
            "(SolverSettings(step=...)) or a limiting shear stress (ContactLaw(limiting_shear=0.07))")
 
 
-def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverSettings()) -> RunInfo:
+def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunInfo:
     """Integrate an assembled ``mbs`` containing the given bearing handles to
     ``end_time`` s (their connectors carry the block Jacobian from the builder;
     ``jacobian='exudyn'`` removes it) and check the result (raises
-    :class:`BearingSimulationError` on divergence)."""
+    :class:`BearingSimulationError` on divergence).
+
+    ``settings``: :class:`SolverSettings` (the package's solver set-up: no solution file,
+    quiet, sensors written every ``output_step``), or the user's own
+    ``exu.SimulationSettings``, used as they are — solution file, console output, sensor
+    periods, solver and tolerances — except ``endTime`` (= ``end_time``) and
+    ``numberOfSteps``, which keeps the step ``endTime / numberOfSteps`` they held."""
     import exudyn as exu
 
+    if isinstance(settings, exu.SimulationSettings):
+        return _run_user_settings(mbs, handles, end_time, settings)
     settings = settings.resolved(handles)
     for h in handles:  # the builder installed the block Jacobian; 'exudyn' takes Exudyn's own
         if settings.jacobian == "exudyn":
@@ -211,6 +219,35 @@ def run_solver(mbs, handles, end_time: float, settings: SolverSettings = SolverS
     if not np.all(np.isfinite(q)) or not np.all(np.isfinite(mbs.systemData.GetODE2Coordinates_t())):
         raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles, mbs)}: "
                                      "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
+    return info
+
+
+def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
+    """:func:`run_solver` with a user's ``exu.SimulationSettings`` (left as they are but the
+    end time and the number of steps for the same step)."""
+    import exudyn as exu
+
+    if not (math.isfinite(end_time) and end_time > 0):
+        raise ValueError(f"end_time must be positive, got {end_time!r}")
+    ti = s.timeIntegration
+    step = ti.endTime / max(ti.numberOfSteps, 1)
+    ti.endTime = end_time
+    ti.numberOfSteps = max(1, int(round(end_time / step)))
+    for h in handles:
+        h.connector.first_non_finite = None
+    start = _time.perf_counter()
+    try:
+        ok = exu.SolveDynamic(mbs, s)
+    except Exception as err:  # Exudyn raises on Newton failure or NaN
+        raise BearingSimulationError(f"exu.SolveDynamic failed at step {step:g} s{_where(handles, mbs)}: {err}") from err
+    wall = _time.perf_counter() - start
+    it = getattr(mbs.sys.get("dynamicSolver"), "it", None)
+    info = RunInfo({"solver": str(ti.solverType), "step": step, "user_settings": True}, wall,
+                   int(getattr(it, "currentStepIndex", 0) or ti.numberOfSteps),
+                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None))
+    q = np.asarray(mbs.systemData.GetODE2Coordinates())
+    if not ok or not np.all(np.isfinite(q)):
+        raise BearingSimulationError(f"exu.SolveDynamic did not finish (step {step:g} s){_where(handles, mbs)}")
     return info
 
 
