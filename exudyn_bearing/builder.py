@@ -321,8 +321,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         # one speed for a pure axial load (all balls alike), each ball's own otherwise
         cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
     steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
-                           sense=sense, inner=inner, axial_varies=callable(axialForce) or callable(radialForce),
-                           displaced=innerRaceDisplacement is not None, contactLaw=contactLaw, ballDrag=ballDrag)
+                           sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
+                           contactLaw=contactLaw, ballDrag=ballDrag)
     if steady is not None:
         e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
         c_loc = steady.ball_orbit_radius * e_r + steady.ball_axial_position * e_z
@@ -421,10 +421,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                          connector, nodes, loads, steady)
 
 
-def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, axial_varies,
-                  displaced, contactLaw, ballDrag):
+def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
+                  contactLaw, ballDrag):
     """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
-    pure-rolling start ('rolling', or 'auto' where the steady state does not apply)."""
+    pure-rolling start ('rolling', or 'auto' where the steady state does not apply). Loads
+    given as functions of time start from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
     if initial_state == "rolling":
