@@ -74,7 +74,7 @@ def exudyn_ball_bearing(sim_time, step=1e-5):
 
 
 def _deep_groove():
-    """The README's deep-groove example bearing (6205-size balls, 10 um diametral clearance)."""
+    """The deep-groove example bearing of docs/REFERENCE.md (6205-size balls, 10 um diametral clearance)."""
     from exudyn_bearing import Bearing
 
     return Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,

@@ -212,13 +212,14 @@ def test_simulate_bearing_file_is_used(reference_run, tmp_path):
 
 
 def _readme_bearing_file():
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text.split("### Bearing files", 1)[1]
+    """The deep-groove example TOML of the user reference (moved there from the README)."""
+    text = (ROOT / "docs" / "REFERENCE.md").read_text(encoding="utf-8")
+    section = text.split("## Bearing files", 1)[1]
     return re.search(r"```toml\n(.+?)\n```", section, re.S).group(1)
 
 
 def test_readme_deep_groove_bearing_file_simulates(tmp_path):
-    """The README's deep-groove TOML at 600 N axial, 1800 rpm (p_max ~1.4 GPa): failed with the
+    """The user reference's deep-groove TOML at 600 N axial, 1800 rpm (p_max ~1.4 GPa): failed with the
     paper's pure Crook law, runs with the default limiting shear (MODEL.md §6a)."""
     (tmp_path / "deep_groove.toml").write_text(_readme_bearing_file())
     data, _ = cli_json("simulate", "--axial", 600, "--rpm", 1800, "--time", 0.002, "--bearing", "deep_groove.toml",

@@ -2,7 +2,7 @@
 half-step difference (tolerances halved too). For a method of order p in its asymptotic
 range the actual error of the reported run, against a run at h/8, is
 (1 - 8^-p) / (1 - 2^-p) times the estimate: 1.07 for RK44 (p = 4), 1.31 at p = 2, 1.75 at
-p = 1. Measured on the reference bearing at 1.3 kN (README, "How accurate is a run"): RK44
+p = 1. Measured on the reference bearing at 1.3 kN (docs/REFERENCE.md, "How accurate is a run"): RK44
 1.06, generalized-alpha (rho_inf 0.5, modified Newton) 2.1-2.3 — in these transients its
 error behaves as first order (the Newton tolerance, scaled with the step, contributes).
 The tests hold each solver's ratio inside a two-sided band, so an estimate inflated or
