@@ -92,7 +92,8 @@ class _OneBall:
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
         self.inertia = 0.4 * bearing.ball_mass * bearing.ball_radius ** 2
-        self.force_scale = max(axial, 1e-3) / (bearing.balls * math.sin(bearing.contact_angle))
+        # ~ a ball's contact load (a zero-clearance bearing has no free angle: at least 0.1)
+        self.force_scale = max(axial, 1e-3) / (bearing.balls * max(math.sin(bearing.contact_angle), 0.1))
         # unknowns scaled to O(1): speeds by the nominal cage / ball spin speeds, lengths in um
         w_nom = abs(bearing.cage_speed(w_i, w_o)) or 1.0
         self.scale = np.array([w_nom, *[abs(w_i - w_o) * bearing.pitch_diameter / d / 2 or 1.0] * 3,

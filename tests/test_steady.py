@@ -133,3 +133,16 @@ def test_cli_json():
         assert key in data
     assert data["converged"] is True
     assert 2.0 < data["kinematic_cage_slip_percent"] < 6.0
+
+
+def test_zero_clearance_deep_groove():
+    """No free contact angle (zero clearance): the steady state still solves, with the
+    contact angle of the quasi-static solution (the film and traction barely move it)."""
+    from exudyn_bearing import Bearing, solve_load_distribution
+
+    brg = Bearing.from_clearance(diametral_clearance=0.0, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                 inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+    state = steady_state(brg, axial=200.0, rpm=3000.0)
+    assert state.converged
+    qs = solve_load_distribution(brg, axial=200.0, rpm=3000.0, cage_speed=state.cage_speed)
+    assert state.inner_contact_angle_deg == pytest.approx(math.degrees(qs.inner_contact_angle[0]), abs=0.5)
