@@ -193,8 +193,9 @@ class SkidMap:
                 if s_mid is None:
                     break
                 lo, hi = (mid, hi) if s_mid >= level else (lo, mid)
+            # (an unconverged midpoint stops the bisection early: the note gives the width reached)
             refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi],
-                           note=f"steady-state bisection to ±{100 * tolerance / 2:g} %")
+                           note=f"steady-state bisection to ±{100 * (hi - lo) / (hi + lo):.1f} %")
             if confirm_time:
                 from .runner import simulate
 
