@@ -272,9 +272,11 @@ class SimulationSummary:
     details: dict = field(default_factory=dict)
     error_estimate: dict | None = None
     results: object = field(default=None, repr=False)
+    #: the :class:`~exudyn_bearing.steady.SteadyState` the run started from, or None
+    initial_steady_state: object = field(default=None, repr=False)
 
     def to_dict(self) -> dict:
-        d = {k: v for k, v in asdict(self).items() if k != "results"}
+        d = {k: v for k, v in asdict(self).items() if k not in ("results", "initial_steady_state")}
         return d
 
 
@@ -327,4 +329,5 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              summary["kinematic_cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
                              info.solver, info.newton_iterations, info.jacobian_updates,
-                             {k: v for k, v in summary.items() if k not in ("settled",)}, estimate, results)
+                             {k: v for k, v in summary.items() if k not in ("settled",)}, estimate, results,
+                             handle.initialSteadyState)

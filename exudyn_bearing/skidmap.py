@@ -107,11 +107,8 @@ def _run_point(args) -> dict:
         res = s.results
         last = res.last(1 / 3)
         peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))
-        steady = None
-        if point.radial == 0:
-            state = steady_state(bearing, lubricant, axial=point.axial, rpm=point.rpm, drag=drag,
-                                 contact_law=law[0] if law else ContactLaw())
-            steady = state.kinematic_cage_slip_percent if state.converged else None
+        # the run started from the steady state where one exists (pure axial load): no second solve
+        steady = s.initial_steady_state.kinematic_cage_slip_percent if s.initial_steady_state is not None else None
         done = replace(point, cage_slip_percent=s.cage_slip_percent,
                        kinematic_cage_slip_percent=s.kinematic_cage_slip_percent, peak_ball_slip=peak,
                        settled=s.settled, steady_kinematic_cage_slip_percent=steady, simulated_time=length)
