@@ -9,7 +9,8 @@ alone takes ~2.5 min); ``--time 0.02 --repeat 3`` gives a quicker, interleaved m
 
     python benchmarks/speed.py [--time 0.1] [--repeat 1]
 
-``--matrix`` instead runs the heavily-loaded and high-speed case matrix (issue 14: cases (a)-(f),
+``--matrix`` instead runs the heavily-loaded and high-speed case matrix (issue 14: cases (a)-(f);
+issue 19: (g28/g48/g72) the 35-mm bearing at 28 000-72 000 rpm, (h1/h2) the 40-mm spindle at 55 000 rpm,
 each at the defaults from the package's start state, with the half-step error estimate) and
 prints wall time, steps against the nominal count (more steps = step cuts), Newton
 iterations, Jacobians, the estimate of the kinematic cage slip and the cost relative to
@@ -89,7 +90,22 @@ def _spindle():
                    outer_conformity=0.52, contact_angle=np.radians(15.0))
 
 
-#: name: (description, bearing factory or None for the reference, axial N, radial N, rpm)
+def _high_speed():
+    """The 35-mm high-speed bearing with its ester oil and 0.5 % oil-air drag (issue 19, MODEL.md §11)."""
+    from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG
+
+    return dict(bearing=HIGH_SPEED_35MM_BEARING, lubricant=ESTER_TURBINE_OIL, drag=HIGH_SPEED_DRAG)
+
+
+def _spindle_40mm():
+    """The 40-mm spindle bearing with the same oil and drag (issue 19)."""
+    from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, SPINDLE_40MM_BEARING
+
+    return dict(bearing=SPINDLE_40MM_BEARING, lubricant=ESTER_TURBINE_OIL, drag=HIGH_SPEED_DRAG)
+
+
+#: name: (description, factory of simulate() keywords — or of a Bearing — or None for the
+#: reference, axial N, radial N, rpm)
 MATRIX = {
     "a": ("reference, 1.3 kN axial, 1800 rpm", None, 1300.0, 0.0, 1800.0),
     "b": ("reference, 2.2 kN + 2 kN radial, 1800 rpm", None, 2200.0, 2000.0, 1800.0),
@@ -99,6 +115,11 @@ MATRIX = {
     "e2": ("deep groove, 2.5 kN radial, 3000 rpm", _deep_groove, 0.0, 2500.0, 3000.0),
     "f1": ("spindle, 300 N axial, 12 000 rpm", _spindle, 300.0, 0.0, 12000.0),
     "f2": ("spindle, 300 N + 600 N radial, 12 000 rpm", _spindle, 300.0, 600.0, 12000.0),
+    "g28": ("35-mm high-speed, 667 N, 28 000 rpm", _high_speed, 667.0, 0.0, 28000.0),
+    "g48": ("35-mm high-speed, 667 N, 48 000 rpm", _high_speed, 667.0, 0.0, 48000.0),
+    "g72": ("35-mm high-speed, 667 N, 72 000 rpm", _high_speed, 667.0, 0.0, 72000.0),
+    "h1": ("40-mm spindle, 1 kN, 55 000 rpm", _spindle_40mm, 1000.0, 0.0, 55000.0),
+    "h2": ("40-mm spindle, 1 kN + 500 N radial, 55 000 rpm", _spindle_40mm, 1000.0, 500.0, 55000.0),
 }
 
 
@@ -109,7 +130,8 @@ def matrix(sim_time, names, law=None):
     rows, wall_a = [], None
     for name in names:
         text, factory, axial, radial, rpm = MATRIX[name]
-        kw = {} if factory is None else {"bearing": factory()}
+        made = None if factory is None else factory()
+        kw = {} if made is None else (made if isinstance(made, dict) else {"bearing": made})
         if law is not None:
             kw["contact_law"] = law
         start = time.perf_counter()
@@ -117,7 +139,7 @@ def matrix(sim_time, names, law=None):
             run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
         except Exception as err:  # noqa: BLE001 - a failing case is a row of the table
             rows.append(f"| {name} | {text} | fails after {time.perf_counter() - start:.1f} s: "
-                        f"{str(err)[:160]} | | | | | |")
+                        f"{str(err)[:160]} | | | | | | |")
             continue
         wall = run.wall_time_s
         nominal = int(round(sim_time / run.solver["step"]))
@@ -127,10 +149,10 @@ def matrix(sim_time, names, law=None):
         ratio = f"{wall / wall_a:.2f}" if wall_a else "-"
         rows.append(f"| {name} | {text} | {wall / sim_time * 0.1:.2f} s ({wall / max(revs, 1e-12):.2f} s per cage rev) "
                     f"| {run.steps} / {nominal} ({run.solver['step']:.3g} s) | {run.newton_iterations} | {run.jacobian_updates} | "
-                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {ratio} |")
+                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {'yes' if run.settled else 'no'} | {ratio} |")
     print(f"| case | scene | wall per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage slip "
-          f"± half-step estimate | wall / (a) |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|")
+          f"± half-step estimate | settled | wall / (a) |")
+    print("|---|---|---:|---:|---:|---:|---:|---|---:|")
     print("\n".join(rows))
     print(f"({sim_time:g} s simulated per case, default settings, each from the package's start state; the "
           f"estimate's own run is not in the wall time)")

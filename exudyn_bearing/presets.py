@@ -1,12 +1,14 @@
-"""The reference bearing of Jain & Hunt (2011), table 1 (MODEL.md §8), as named presets."""
+"""Named presets: the reference bearing of Jain & Hunt (2011), table 1 (MODEL.md §8), and the
+high-speed bearings and ester oil of MODEL.md §11."""
 from __future__ import annotations
 
 import math
 
 from contact.lubricant import REFERENCE_LUBRICANT, Lubricant
-from .bearing import STEEL, BallDrag, Bearing
+from .bearing import STEEL, BallDrag, Bearing, Material
 
-__all__ = ["REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM", "Lubricant"]
+__all__ = ["REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM", "Lubricant",
+           "M50_STEEL", "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG"]
 
 REFERENCE_BEARING = Bearing(
     balls=16,  # paper table 1a
@@ -29,3 +31,30 @@ REFERENCE_DRAG = BallDrag(drag_coefficient=0.5, oil_volume_fraction=1.0)
 
 #: Inner-race speed of the paper's results, rpm (outer race fixed).
 REFERENCE_SPEED_RPM = 1800.0
+
+#: AISI M-50 bearing steel (E 203 GPa, nu 0.28, 7830 kg/m^3; Harris & Kotzalas, Essential
+#: Concepts of Bearing Technology, 5th ed., table 20.1 class values).
+M50_STEEL = Material(203e9, 0.28, 7830.0)
+
+#: A 35-mm-bore high-speed angular-contact bearing (issue 19, case g; the turbine-engine
+#: bearing class studied up to DN 2.5 million): 16 balls of 7.144 mm on a 46.5-mm pitch
+#: circle, conformity 0.535/0.535, free contact angle 24 deg, M-50 balls and races.
+HIGH_SPEED_35MM_BEARING = Bearing(balls=16, ball_diameter=7.144e-3, pitch_diameter=46.5e-3, inner_conformity=0.535,
+                                  outer_conformity=0.535, contact_angle=math.radians(24.0), ball_material=M50_STEEL,
+                                  race_material=M50_STEEL)
+
+#: A 40-mm-bore spindle bearing (issue 19, case h): 14 balls of 8.731 mm, d_m 55 mm,
+#: conformity 0.52 inner / 0.53 outer, free contact angle 20 deg, M-50 steel.
+SPINDLE_40MM_BEARING = Bearing(balls=14, ball_diameter=8.731e-3, pitch_diameter=55e-3, inner_conformity=0.52,
+                               outer_conformity=0.53, contact_angle=math.radians(20.0), ball_material=M50_STEEL,
+                               race_material=M50_STEEL)
+
+#: MIL-PRF-23699 ester turbine oil with the oil in at 121 degC (MODEL.md §11): 27.6 cSt at
+#: 40 degC and 5.1 cSt at 100 degC give by Walther's relation (ASTM D341) 3.5 cSt x 919 kg/m^3
+#: = 3.2 mPa s at 121 degC, local slope d ln(eta)/dT = -0.016 1/K; c_etaP 1.5e-8 1/Pa;
+#: conductivity 0.15 W/(m K) (typical of esters).
+ESTER_TURBINE_OIL = Lubricant(viscosity=3.2e-3, reference_temperature=121.0, pressure_viscosity=1.5e-8,
+                              temperature_viscosity=0.016, thermal_conductivity=0.15, density=919.0)
+
+#: Jet- or mist-lubricated high-speed bearing: 0.5 % oil in the oil-air mixture (issue 19).
+HIGH_SPEED_DRAG = BallDrag(drag_coefficient=0.5, oil_volume_fraction=0.005)

@@ -184,12 +184,18 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     # root finder to converge below ~1e-3, while the two rules agree within 1e-2 (MODEL.md §6)
     law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
     ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law)
-    x = _start(bearing, ball, axial, rpm, outer_rpm)
     lo, hi = ball.bounds()
-    sol = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14, method="trf",
-                        bounds=(lo, hi), max_nfev=2000)
-    worst = float(np.max(np.abs(sol.fun)))
-    converged = bool(worst <= tol) and not np.any(sol.active_mask != 0)  # a root on a bound is no root
+    # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
+    # outer-raceway control, the continuation from it can run away: then the exact
+    # raceway-control axes (MODEL.md §7, §12)
+    for axis in ("free", "outer", "inner"):
+        x = _start(bearing, ball, axial, rpm, outer_rpm, axis=axis)
+        sol = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14, method="trf",
+                            bounds=(lo, hi), max_nfev=2000)
+        worst = float(np.max(np.abs(sol.fun)))
+        converged = bool(worst <= tol) and not np.any(sol.active_mask != 0)  # a root on a bound is no root
+        if converged:
+            break
     message = "converged" if converged else (
         f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
         "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")
@@ -197,8 +203,9 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
                    _time.perf_counter() - start)
 
 
-def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2):
-    """Pure rolling about the free-angle axis at the quasi-static position; then, in turn,
+def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
+    """Pure rolling about the free-angle axis (``axis`` 'free') or with exact inner- or
+    outer-raceway control ('inner', 'outer') at the quasi-static position; then, in turn,
     the speeds balanced with the position held and the position balanced (normal forces
     only) against the centrifugal force of the current cage speed, until the cage speed
     changes by less than ``tol`` (relative). Near gross sliding a joint solve from pure
@@ -211,9 +218,16 @@ def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2):
     r = bearing.ball_radius
     p_in = c - r * np.array([math.cos(a_i), 0.0, math.sin(a_i)])
     p_out = c + r * np.array([math.cos(a_o), 0.0, math.sin(a_o)])
-    w_c, spin = rolling_cage_speed(c[None], e[None], p_in[None], p_out[None], ball.w_i, ball.w_o, return_spin=True)
     x = np.zeros(7)
-    x[0], x[1:4] = w_c[0], spin[0] * e
+    if axis == "free":
+        w_c, spin = rolling_cage_speed(c[None], e[None], p_in[None], p_out[None], ball.w_i, ball.w_o, return_spin=True)
+        x[0], x[1:4] = w_c[0], spin[0] * e
+    else:
+        from .builder import raceway_control
+
+        w_c, omega = raceway_control(c[None], p_in[None], p_out[None], ball.w_i, ball.w_o,
+                                     np.array([axis == "inner"]), inner_origin=(0.0, 0.0, loads.displacement[2]))
+        x[0], x[1:4] = w_c[0], omega[0]
     x[:4] /= ball.scale[:4]
     x[4:] = np.array([loads.ball_radius_offset[0], loads.ball_axial_offset[0], loads.displacement[2]]) / MICRON
     normal = _OneBall(bearing, ball.lub, ball.axial, ball.w_i, ball.w_o, None, replace(ball.law, traction="none"))

@@ -16,6 +16,24 @@ radial load (ω_n h = 7.6). The default step is the nominal 1e-4 s divided by th
 whole number that brings ω_n h to 8 or below, so the output period of 1e-4 s stays a
 multiple of it; at that step the radially loaded small-ball cases still cut 6–9 % of their
 steps.
+
+At speed a second limit takes over: the balls' orbit. Exudyn's implicit solver starts each
+step's Newton iteration with zero acceleration (its predictor keeps only the previous step's
+share of it), so a ball orbiting at r_c ω_c² begins every step displaced outward by
+
+    e = c h² r_c ω_c²,   c = β (1 − α_f) / (1 − α_m) = 0.296 (generalized-alpha, ρ∞ = 0.5),
+
+into its outer race. Once e is several times the outer contact's Hertz deflection δ_o the
+first iterate loads the contact tens of times over (11 kN against 0.5 kN at 72 000 rpm,
+h = 2.5e-5 s) and Newton needs 10–25 iterations and several Jacobians per step. Measured
+(35-mm bearing, 16 balls of 7.144 mm, 667 N; 40-mm spindle, 14 balls of 8.731 mm, 1 kN
+axial, with and without 500 N radial; 5 ms each, wall per 0.1 s): e/δ_o = 2.0 at
+28 000 rpm (h = 2.5e-5 s): 5 Newton iterations per step, no cut, 6 s; 48 000 rpm: 4.1 (2.5e-5
+s) 15 s, 1.8 (1.67e-5 s) 10 s; 72 000 rpm: 7.9 (2.5e-5 s) 42 s with 10 % of the steps cut,
+2.7 / 2.0 / 1.5 / 0.96 (1.67 / 1.43 / 1.25 / 1.0e-5 s) 27 / 19 / 24 / 20 s; the spindle at
+55 000 rpm: 3.75 (2.5e-5 s) 42 s with 5 % cut, 1.7 (1.67e-5 s) 11 s, radial 1.5 11 s. The
+reference bearing at 1800 rpm and 200 N holds 1e-4 s at e/δ_o = 1.7. The step is therefore
+also limited to e <= 2 δ_o (:data:`MAX_ORBIT_PREDICTOR_RATIO`).
 """
 from __future__ import annotations
 
@@ -23,12 +41,18 @@ import math
 
 import numpy as np
 
-__all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "ball_vibration_frequency", "recommended_step"]
+__all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
+           "ball_vibration_frequency", "orbit_step_limit", "recommended_step"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
 #: the largest ω_n h at which every step converged in the case matrix, rad
 MAX_VIBRATION_PHASE = 8.0
+#: beta (1 - alpha_f) / (1 - alpha_m) of generalized-alpha at spectral radius 0.5: the share of
+#: h² times a step's acceleration that Exudyn's Newton predictor leaves out
+ORBIT_PREDICTOR_FACTOR = 0.25 * (0.5 + 1.0 / 3.0 + 0.5) ** 2 * (2.0 / 3.0)
+#: largest c h² r_c ω_c² / δ_o at which the high-speed cases ran without a step cut, -
+MAX_ORBIT_PREDICTOR_RATIO = 2.0
 
 
 def ball_vibration_frequency(bearing, loads) -> float:
@@ -44,9 +68,25 @@ def ball_vibration_frequency(bearing, loads) -> float:
     return float(np.sqrt(k.max() / bearing.ball_mass)) if k.size else 0.0
 
 
+def orbit_step_limit(bearing, loads) -> float:
+    """Largest step h with c h² r_c ω_c² <= :data:`MAX_ORBIT_PREDICTOR_RATIO` δ_o (module
+    docstring), s, over the balls of the quasi-static ``loads`` with an outer contact: r_c the
+    orbit radius, ω_c the cage speed the loads were solved at, δ_o the outer Hertz deflection;
+    inf where nothing orbits or no outer contact is loaded."""
+    w_c = np.broadcast_to(np.abs(np.asarray(loads.cage_speed, dtype=float)), np.shape(loads.outer_deflection))
+    r_c = bearing.pitch_radius + np.asarray(loads.ball_radius_offset, dtype=float)
+    delta = np.asarray(loads.outer_deflection, dtype=float)
+    accel = r_c * w_c ** 2
+    ok = (delta > 0) & (accel > 0)
+    if not np.any(ok):
+        return math.inf
+    return float(np.min(np.sqrt(MAX_ORBIT_PREDICTOR_RATIO * delta[ok] / (ORBIT_PREDICTOR_FACTOR * accel[ok]))))
+
+
 def recommended_step(bearing, loads, nominal: float = NOMINAL_STEP) -> float:
     """``nominal`` / n, n the smallest whole number with ω_n h <= :data:`MAX_VIBRATION_PHASE`
-    (:func:`ball_vibration_frequency`), s."""
+    (:func:`ball_vibration_frequency`) and h within :func:`orbit_step_limit`, s."""
     w_n = ball_vibration_frequency(bearing, loads)
     n = max(1, math.ceil(w_n * nominal / MAX_VIBRATION_PHASE - 1e-9))
+    n = max(n, math.ceil(nominal / orbit_step_limit(bearing, loads) - 1e-9))
     return nominal / n

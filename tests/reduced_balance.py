@@ -98,12 +98,15 @@ def rolling_cage_speed(c, axis, p_in, p_out, w_i):
 
 
 def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density, limiting_shear=None,
-                  film_modulus=None) -> Balance:
+                  film_modulus=None, start_axis="free") -> Balance:
     """Steady state of a bearing under pure ``axial`` load (N), outer race fixed, inner
     race at ``rpm``, with drag F_D = 1/2 C_D rho pi r² v² for the given C_D and oil
     density (kg/m³; MODEL.md §8) and Crook's traction, capped smoothly at
     ``limiting_shear`` x p (MODEL.md §6a; None: the paper's pure law), with the film's elastic
-    compliance G = ``film_modulus`` x p in series (MODEL.md §6b; None: none)."""
+    compliance G = ``film_modulus`` x p in series (MODEL.md §6b; None: none).
+    ``start_axis``: the first guess of the ball's spin axis, 'free' (tilted by the free angle)
+    or 'outer' (perpendicular to the quasi-static outer contact normal: at high speed the
+    outer race controls the ball)."""
     w_i = rpm * math.pi / 30
     r, z, m = bearing.ball_radius, bearing.balls, bearing.ball_mass
     inertia = 0.4 * m * r ** 2
@@ -158,6 +161,9 @@ def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density,
         position = [float(loads.ball_radius_offset[0]) / MICRON, float(loads.ball_axial_offset[0]) / MICRON,
                     float(loads.displacement[2]) / MICRON]
         if x is None:
+            if start_axis == "outer":
+                a_o = float(loads.outer_contact_angle[0])
+                e = np.array([-math.sin(a_o), 0.0, math.cos(a_o)])
             c0 = np.array([bearing.pitch_radius + position[0] * MICRON, 0.0, position[1] * MICRON])
             p_in = c0 - r * np.array([math.cos(loads.inner_contact_angle[0]), 0, math.sin(loads.inner_contact_angle[0])])
             p_out = c0 + r * np.array([math.cos(loads.outer_contact_angle[0]), 0, math.sin(loads.outer_contact_angle[0])])
