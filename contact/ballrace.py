@@ -14,6 +14,7 @@ import numpy as np
 from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
+from .rolling_resistance import hydrodynamic_rolling_force, rolling_resistance_moment, thermal_film_factor
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS", "CROOK_MODELS"]
 
@@ -97,6 +98,14 @@ class ContactLaw:
     hertz_method : {'fit', 'exact'}
     friction_coefficient, friction_regularization : float
         μ and the slip speed u_r (m/s) that smooths stick–slip, for ``traction='coulomb'``.
+    rolling_resistance : bool
+        Apply the hydrodynamic (EHL) rolling resistance of Biboulet & Houpert (2010) at each
+        loaded contact as an equal and opposite couple on ball and race about the transverse
+        axis (MODEL.md §11b; beyond the paper, off by default). Crook laws only.
+    thermal_film : bool
+        Reduce the film thickness (and the rolling resistance) by the inlet-shear-heating
+        factor φ_T of Zhu & Cheng (MODEL.md §11e; beyond the paper, off by default). Crook
+        laws only.
     compiled : bool
         Evaluate the bearing's contacts with the numba-compiled kernels
         (:mod:`contact.compiled`, the same equations without per-call numpy overhead, ~4x
@@ -126,6 +135,8 @@ class ContactLaw:
     compiled: bool = True
     friction_coefficient: float = 0.05
     friction_regularization: float = 1e-3
+    rolling_resistance: bool = False
+    thermal_film: bool = False
 
     def __post_init__(self) -> None:
         if self.traction not in TRACTION_MODELS:
@@ -143,6 +154,9 @@ class ContactLaw:
             raise ValueError(f"max_barus_exponent must lie in (0, 80], got {self.max_barus_exponent!r}")
         if self.limiting_shear is not None and not (np.isfinite(self.limiting_shear) and self.limiting_shear > 0):
             raise ValueError(f"limiting_shear must be positive or None, got {self.limiting_shear!r}")
+        for name in ("rolling_resistance", "thermal_film"):
+            if getattr(self, name) not in (True, False):
+                raise ValueError(f"{name} must be True or False, got {getattr(self, name)!r}")
         if self.film_elasticity not in (None, True, False):
             raise ValueError(f"film_elasticity must be True, False or None, got {self.film_elasticity!r}")
 
@@ -182,6 +196,12 @@ class ContactForces:
     film_thickness: np.ndarray  #: h_c, m (0 where unloaded)
     max_pressure: np.ndarray  #: p_max, Pa
     heat: np.ndarray  #: integral of tau . u over the patch, W
+    #: rolling-resistance moment on the ball about t2 (the race takes the opposite), N m (§11b)
+    rolling_moment: np.ndarray = None
+    #: power the rolling resistance dissipates, W (>= 0)
+    rolling_loss: np.ndarray = None
+    #: power the normal contact damping dissipates, W
+    damping_loss: np.ndarray = None
 
 
 def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lubricant,
@@ -196,11 +216,16 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     n_con = kin.penetration.shape[0]
     r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
     delta = np.maximum(kin.penetration, 0.0)
-    load = contact.stiffness * delta ** 1.5
+    elastic = contact.stiffness * delta ** 1.5
+    load = elastic
     if law.damping_ratio > 0:
         damping = 2.0 * law.damping_ratio * np.sqrt(1.5 * contact.stiffness * np.sqrt(delta) * params.ball_mass)
         load = load + damping * kin.penetration_rate
     load = np.where(kin.penetration > 0, np.maximum(load, 0.0), 0.0)
+    # the damping part of Q times the approach rate (the elastic part stores energy)
+    damping_loss = np.where(load > 0, (load - elastic) * kin.penetration_rate, 0.0)
+    rolling = np.zeros(n_con)
+    rolling_loss = np.zeros(n_con)
     fx = np.zeros(n_con)
     fy = np.zeros(n_con)
     mz = np.zeros(n_con)
@@ -226,7 +251,21 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         a, b = a[idx], b[idx]
         h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
                                           params.effective_modulus, lubricant)
-        h[idx] = np.maximum(h_c, law.min_film_thickness)
+        phi_t = 1.0
+        if law.thermal_film:
+            phi_t = thermal_film_factor(kin.entrainment[idx], kin.slip_rolling[idx], p_max[idx],
+                                        params.effective_modulus, lubricant.viscosity,
+                                        lubricant.temperature_viscosity, lubricant.thermal_conductivity)
+        h[idx] = np.maximum(phi_t * h_c, law.min_film_thickness)
+        if law.rolling_resistance:
+            r_y = np.broadcast_to(geometry.curvature_radii(params.ball_diameter, params.pitch_diameter,
+                                                           kin.contact_angle, params.conformity, params.race)[1],
+                                  (n_con,))
+            f_r = phi_t * hydrodynamic_rolling_force(load[idx], kin.entrainment[idx], r_x[idx], r_y[idx],
+                                                     a, b, params.effective_modulus, lubricant.viscosity,
+                                                     width=params.ball_diameter)
+            rolling[idx] = rolling_resistance_moment(f_r, r_x[idx], kin.rolling_rate[idx])
+            rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx]
         # spin still shapes the local slip field when its moment is switched off
         p_traction = p_max[idx]
         if lubricant.pressure_viscosity > 0:
@@ -246,4 +285,6 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     force = -load[:, None] * kin.normal + fx[:, None] * kin.rolling + fy[:, None] * kin.transverse
     # lever arm p - c = r n: the normal force has no moment about the ball centre
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
-    return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat)
+    if law.rolling_resistance:
+        moment = moment + rolling[:, None] * kin.transverse
+    return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)

@@ -543,7 +543,7 @@ def rotation_matrices(nu):
 def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                   c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                  lam_s, kap_e):
+                  lam_s, kap_e, rr_width, th_k):
     """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
     z = c.shape[1]
     diam = 2.0 * ball_radius
@@ -626,6 +626,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
     fx = 0.0
     fy = 0.0
     mz = 0.0
+    m_r = 0.0  # rolling-resistance couple about t2, on the ball
     if traction == 1 and q > 0.0:
         base = 6.0 * second * q * radius / (math.pi * e_prime)
         sa = np.cbrt(ell * ell * base)
@@ -636,11 +637,33 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
         w_d = q / (e_prime * r_x * r_x)
         h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
             1.0 - 0.61 * math.exp(-0.73 * ell))
-        h = max(h, min_film)
+        phi_t = 1.0
+        if th_k > 0.0 and entrainment != 0.0:  # inlet shear heating (MODEL.md §11e)
+            u_r = abs(entrainment)
+            l_t = eta0 * th_k * u_r * u_r
+            s_r = abs(u_x) / u_r
+            phi_t = ((1.0 - 13.2 * (p_max / e_prime) * l_t ** 0.42)
+                     / (1.0 + 0.213 * (1.0 + 2.23 * s_r ** 0.83) * l_t ** 0.64))
+            phi_t = min(max(phi_t, 0.05), 1.0)
+        h = max(phi_t * h, min_film)
         fx, fy, mz, _ = _crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, eta0, c_p, c1_coef, lam_s,
                                    cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, kap_e, entrainment)
         if not spin_moment:
             mz = 0.0
+        if rr_width > 0.0 and entrainment != 0.0:  # hydrodynamic rolling resistance (MODEL.md §11b)
+            kap = min(sb / sa, 1.0)
+            rxy = min(r_x / r_y, 1.0)
+            beta = (4.0 / math.pi) * (1.0003 + 0.5968 * rxy) / (1.0 + r_x / r_y)
+            big_u = 2.0 * eta0 * abs(entrainment) / (e_prime * r_x)
+            moes = beta ** 0.25 * kap * (q / (e_prime * r_x * r_x)) / big_u ** 0.75
+            ehl = 1.8 * beta ** -0.25
+            ivr = 0.77 * beta ** (-1.0 / 3.0) * kap ** 0.12 * big_u ** (-1.0 / 12.0)
+            f_r = e_prime * r_x * (2.0 * sa) * ((ivr - ehl) / (1.0 + moes / 6.6) + ehl) * big_u ** 0.75
+            c_t = 0.85 / (1.0 + 4.72 * moes ** -0.39 * kap ** (0.484 * moes ** 0.165))
+            span = min(2.0 * sa / rr_width, 1.0)
+            f_r = phi_t * f_r / (1.0 + (1.0 / c_t - 1.0) * span ** ((2.0 - kap) * (0.0018 * moes + 1.33)))
+            w_rel = ((wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z)
+            m_r = -2.0 * f_r * r_x * math.tanh(r_x * w_rel / 1e-3)
     Fx = -q * nx + fx * t1x + fy * t2x
     Fy = -q * ny + fx * t1y + fy * t2y
     Fz = -q * nz + fx * t1z + fy * t2z
@@ -648,16 +671,16 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
     force[ib, k, j, 1] = Fy
     force[ib, k, j, 2] = Fz
     # lever arm r n: the normal part has no moment about the ball centre
-    moment[ib, k, j, 0] = ball_radius * (ny * Fz - nz * Fy) + mz * nx
-    moment[ib, k, j, 1] = ball_radius * (nz * Fx - nx * Fz) + mz * ny
-    moment[ib, k, j, 2] = ball_radius * (nx * Fy - ny * Fx) + mz * nz
+    moment[ib, k, j, 0] = ball_radius * (ny * Fz - nz * Fy) + mz * nx + m_r * t2x
+    moment[ib, k, j, 1] = ball_radius * (nz * Fx - nx * Fz) + mz * ny + m_r * t2y
+    moment[ib, k, j, 2] = ball_radius * (nx * Fy - ny * Fx) + mz * nz + m_r * t2z
 
 
 @njit(cache=True, error_model="numpy")
 def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                   e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                   c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                  lam_s=0.0, kap_e=0.0):
+                  lam_s=0.0, kap_e=0.0, rr_width=0.0, th_k=0.0):
     """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
 
     Parameters
@@ -683,6 +706,11 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
         Crook. Last, so that calls written before it existed keep working.
     kap_e : float, optional
         κ = G/p of the film's elastic compliance (MODEL.md §6b); 0 (default): none.
+    rr_width : float, optional
+        Hydrodynamic rolling resistance (MODEL.md §11b) with the truncation width 𝓛 (the
+        ball diameter), m; 0 (default): none.
+    th_k : float, optional
+        c_ηT / K_c of the thermal film factor (MODEL.md §11e), m K/W / K; 0 (default): none.
     force, moment : ndarray (B, 2, Z, 3), out
         On each ball at its contact with race k, N; about the ball centre, N m.
     penetration, load : ndarray (B, 2, Z), out
@@ -692,14 +720,14 @@ def race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                      lam_s, kap_e)
+                      lam_s, kap_e, rr_width, th_k)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
 def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                            e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                            c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration,
-                           load, lam_s, kap_e, todo):
+                           load, lam_s, kap_e, rr_width, th_k, todo):
     """:func:`race_contacts` with the contacts spread over numba's threads, for the flat
     contact indices ``todo`` only (state idx // 2Z, race idx // Z % 2, ball idx % Z; int64):
     the rest of the outputs is left as it is (a Jacobian's race columns change one race's
@@ -709,7 +737,7 @@ def race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ba
         _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
                       e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus,
                       c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, penetration, load,
-                      lam_s, kap_e)
+                      lam_s, kap_e, rr_width, th_k)
 
 
 @njit(cache=True, error_model="numpy")

@@ -69,6 +69,8 @@ class ContactKinematics:
     entrainment: np.ndarray  #: mean surface speed relative to the moving contact, m/s
     orbit_radius: np.ndarray  #: distance of the ball centre from the race axis, m
     point_radius: np.ndarray  #: distance of the contact centre from the race axis, m
+    #: relative rolling rotation (w_ball - w_race) . t2, rad/s (MODEL.md §11b)
+    rolling_rate: np.ndarray = None
 
 
 def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, race_rotation,
@@ -115,7 +117,7 @@ def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, ra
     u_x = _dot(slip, t1)
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     return ContactKinematics(con.penetration, rate, n, t1, t2, p, con.contact_angle, u_x, _dot(slip, t2),
-                             _dot(w_r - w_b, n), entrainment, rho_c, rho_p)
+                             _dot(w_r - w_b, n), entrainment, rho_c, rho_p, _dot(w_b - w_r, t2))
 
 
 def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_speed, outer_speed,

@@ -71,7 +71,9 @@ def _simulate(args) -> int:
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
-                       contact_law=ContactLaw(traction=args.traction, quadrature_order=args.order),
+                       contact_law=ContactLaw(traction=args.traction, quadrature_order=args.order,
+                                              rolling_resistance=args.rolling_resistance,
+                                              thermal_film=args.thermal_film),
                        error_estimate=args.error_estimate)
     data = summary.to_dict()
     if args.plot:
@@ -92,6 +94,10 @@ def _simulate(args) -> int:
     print(f"  settled                             {'yes' if data['settled'] else 'NO (still drifting: run longer)'}")
     d = data["details"]
     print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
+    loss = data["power_loss_W"]
+    parts = ", ".join(f"{k.replace('_', ' ')} {v:.1f}" for k, v in loss.items() if k != "total" and abs(v) >= 0.05)
+    print(f"  power loss (MODEL.md §11)           {loss['total']:8.1f} W ({parts or 'none'}); "
+          f"drive {data['drive_power_W']:.1f} W")
     print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
           f"{data['newton_iterations']} Newton iterations, {data['jacobian_updates']} Jacobian updates, "
           f"wall time {data['wall_time_s']:.1f} s")
@@ -251,6 +257,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
     _traction_option(p)
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
+    p.add_argument("--rolling-resistance", action="store_true",
+                   help="hydrodynamic rolling resistance at each contact (MODEL.md §11b)")
+    p.add_argument("--thermal-film", action="store_true",
+                   help="inlet-shear-heating reduction of the film thickness (MODEL.md §11e)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")

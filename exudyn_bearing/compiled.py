@@ -129,7 +129,7 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                spin_moment, min_film, eta0, c_p, max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
                w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
                drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, applied, held, driven,
-               max_penetration, out, penetration, load, lam_s, kap_e):
+               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
     guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force (N) on the
@@ -172,7 +172,7 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
     kernels.race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter, e_prime,
                           ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus, c1_coef,
                           cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, pen3,
-                          load.reshape(1, 2, z), lam_s, kap_e)
+                          load.reshape(1, 2, z), lam_s, kap_e, rr_width, th_k)
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
     kernels.cage_and_drag(c, v, cage_kind, pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(),
@@ -317,6 +317,10 @@ class CompiledForces:
                         lub.temperature_viscosity / (8.0 * lub.thermal_conductivity))
         self.lam_s = float(law.limiting_shear_for(lub) or 0.0)  # Λ of MODEL.md §6a, 0: none
         self.kap_e = float(law.film_modulus_for(lub) or 0.0)  # κ of MODEL.md §6b, 0: none
+        crook = law.traction in CROOK_MODELS
+        # MODEL.md §11b (truncation width: the ball diameter) and §11e; 0: off
+        self.rr_width = float(b.ball_diameter) if (crook and law.rolling_resistance) else 0.0
+        self.th_k = float(lub.temperature_viscosity / lub.thermal_conductivity) if (crook and law.thermal_film) else 0.0
         self.cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
         self.cage_slot = con.layout["cage"] if self.cage_kind == 1 else -1
         drag = con.drag
@@ -373,7 +377,7 @@ class CompiledForces:
                             *self.cage_args, self.guide_race, *self.guide,
                             np.asarray(con.applied_force(t), dtype=float), self.held, driven,
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
-                            self.lam_s, self.kap_e)
+                            self.lam_s, self.kap_e, self.rr_width, self.th_k)
         return status, self.out
 
     def _arrays(self, bsz):
@@ -411,7 +415,7 @@ class CompiledForces:
         c, v, wb = (np.take(x, self.balls, axis=1) for x in (pos, vel, omega))
         args = (c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
                 *self.physics, *self.tables, w["force"], w["moment"], w["penetration"], w["load"], self.lam_s,
-                self.kap_e)
+                self.kap_e, self.rr_width, self.th_k)
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
         # OpenMP is missing, serves one caller at a time)

@@ -122,6 +122,8 @@ class ConnectorState:
     generalized: np.ndarray = field(repr=False, default=None)
     cage_eccentricity: float = 0.0  #: rigid cage centre off its guiding (else the outer) race's axis, m
     cage_land_force: np.ndarray = None  #: guiding land on the cage, (3,), N (None: not guided)
+    cage_position: np.ndarray = None  #: rigid cage centre, (3,), m (None: no rigid cage)
+    cage_velocity: np.ndarray = None  #: its velocity, (3,), m/s
 
 
 def _take(record, part):
@@ -314,7 +316,9 @@ class BearingConnector:
         return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
                               cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
                               race_omega["inner"][0], race_omega["outer"][0],
-                              self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega))
+                              self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega),
+                              cage_position=pos[cage_slot] if self.cage.kind == "rigid" else None,
+                              cage_velocity=vel[cage_slot] if self.cage.kind == "rigid" else None)
 
     def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces

@@ -83,6 +83,14 @@ class BearingResults:
     max_traction_coefficient: float = 0.0
     #: where it exceeded TRACTION_COEFFICIENT_LIMIT (also issued as a warning), else None
     traction_warning: str | None = None
+    #: moment all balls apply to the outer race about the bearing centre, bearing frame, (T, 3), N m
+    outer_race_moment: np.ndarray = None
+    #: power the ball drag takes from the balls, (T,), W
+    drag_loss: np.ndarray = None
+    #: power dissipated in the ball–pocket contacts (pocket damping; springs average out), (T,), W
+    cage_loss: np.ndarray = None
+    #: power dissipated at the cage's guiding land, (T,), W (race translation neglected)
+    land_loss: np.ndarray = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -102,8 +110,40 @@ class BearingResults:
             "max_outer_load": float(np.max(self.outer["load"][m])),
             "max_inner_slip": float(np.max(self.inner["slip"][m])),
             "max_traction_coefficient": float(self.max_traction_coefficient),
+            "power_loss_W": {k: float(np.mean(v[m])) for k, v in self.power_loss().items()},
+            "drive_power_W": float(np.mean(self.drive_power()[m])),
             "settled": self.settled(settle_tolerance_percent),
         }
+
+    def power_loss(self) -> dict:
+        """Power lost by source, W, as time series (T,) (MODEL.md §11): 'traction' (traction
+        and spin moment at all ball–race contacts, §6), 'rolling_resistance' (§11b),
+        'contact_damping' (the normal contact damping, §3), 'ball_drag' (§8), 'cage'
+        (ball–pocket and guiding-land contacts), and their 'total'. Sources a scene does not
+        model are zero. Compare :meth:`drive_power`."""
+        zero = np.zeros_like(self.time)
+
+        def both(name):
+            return (np.sum(self.inner[name], axis=1) + np.sum(self.outer[name], axis=1)) if name in self.inner else zero
+
+        out = {"traction": both("heat"), "rolling_resistance": both("rolling_loss"),
+               "contact_damping": both("damping_loss"),
+               "ball_drag": zero if self.drag_loss is None else self.drag_loss,
+               "cage": (zero if self.cage_loss is None else self.cage_loss)
+               + (zero if self.land_loss is None else self.land_loss)}
+        out["total"] = sum(out.values())
+        return out
+
+    def drive_power(self) -> np.ndarray:
+        """Power the races put into the balls through the contacts, (T,), W: -(M_z w) of the
+        balls' moment on each race about the bearing axis. In a settled run it equals the total
+        of :meth:`power_loss` (energy balance; race translation neglected)."""
+        if self.inner_race_moment is None:  # results assembled without the race reactions
+            return np.full_like(self.time, np.nan, dtype=float)
+        p = -self.inner_race_moment[:, 2] * self.inner_speed
+        if self.outer_race_moment is not None:
+            p = p - self.outer_race_moment[:, 2] * self.outer_speed
+        return p
 
     def settled(self, tolerance_percent=0.1, minimum_time=0.05) -> bool:
         """The run lasted at least ``minimum_time`` s (shorter windows hide slow drifts)
@@ -118,7 +158,8 @@ class BearingResults:
 
 
 _CONTACT_FIELDS = ("load", "contact_angle", "slip_rolling", "slip_transverse", "slip", "spin", "film",
-                   "traction_rolling", "traction_transverse", "spin_moment", "heat", "max_pressure")
+                   "traction_rolling", "traction_transverse", "spin_moment", "heat", "max_pressure", "rolling_loss",
+                   "damping_loss")
 
 
 def compute_results(handle, time, q, q_t) -> BearingResults:
@@ -133,6 +174,8 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     contacts = {race: {f: np.zeros((steps, z)) for f in _CONTACT_FIELDS} for race in ("inner", "outer")}
     race_force = {race: np.zeros((steps, 3)) for race in ("inner", "outer")}
     inner_moment = np.zeros((steps, 3))
+    outer_moment = np.zeros((steps, 3))
+    losses = np.zeros((steps, 3))  # ball drag, cage pockets, guiding land
     land = np.zeros((steps, 2))  # cage eccentricity, land force
     for k in range(steps):
         s = con.evaluate(time[k], q[k], q_t[k], details=True)
@@ -166,6 +209,9 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
         # is -[(c - o) x F + (moment on the ball about its centre)]
         inner_moment[k] = -np.sum(cross(s.ball_position - origin, s.inner_forces.force) + s.inner_forces.moment,
                                   axis=0) @ frame
+        outer_moment[k] = -np.sum(cross(s.ball_position - origin, s.outer_forces.force) + s.outer_forces.moment,
+                                  axis=0) @ frame
+        losses[k] = _body_losses(s)
         for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
             race_force[race][k] = -f.force.sum(axis=0) @ frame
             c = contacts[race]
@@ -175,6 +221,9 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
             c["spin"][k], c["film"][k] = kin.spin, f.film_thickness
             c["traction_rolling"][k], c["traction_transverse"][k] = f.traction_rolling, f.traction_transverse
             c["spin_moment"][k], c["heat"][k], c["max_pressure"][k] = f.spin_moment, f.heat, f.max_pressure
+            for name in ("rolling_loss", "damping_loss"):
+                if getattr(f, name) is not None:
+                    c[name][k] = getattr(f, name)
     mu_max, warning = _traction_coefficient(time, contacts)
     nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(arrays["inner_speed"], arrays["outer_speed"])])
     cage = arrays["cage_speed"]
@@ -183,7 +232,23 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
                           cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
                           w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
                           race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1], mu_max,
-                          warning)
+                          warning, outer_moment, losses[:, 0], losses[:, 1], losses[:, 2])
+
+
+def _body_losses(s) -> tuple:
+    """(ball drag, cage pocket, guiding land) power losses of one :class:`ConnectorState`, W:
+    minus the power of each force pair over the velocities of the points it acts on (the
+    pocket reaction acts on the cage at the ball centre, the land force at the cage centre)."""
+    drag = -float(np.sum(s.drag_force * s.ball_velocity))
+    pocket = land = 0.0
+    if s.cage_position is not None:
+        v_pocket = s.cage_velocity + cross(s.cage_omega, s.ball_position - s.cage_position)
+        pocket = -float(np.sum(s.cage_force * (s.ball_velocity - v_pocket)))
+        if s.cage_land_force is not None:
+            land = -float(s.cage_land_force @ s.cage_velocity)
+    elif s.cage_force is not None:
+        pocket = -float(np.sum(s.cage_force * s.ball_velocity))  # spring chain: balls only
+    return drag, pocket, land
 
 
 def _traction_coefficient(time, contacts, threshold=None):

@@ -274,6 +274,10 @@ class SimulationSummary:
     results: object = field(default=None, repr=False)
     #: the :class:`~exudyn_bearing.steady.SteadyState` the run started from, or None
     initial_steady_state: object = field(default=None, repr=False)
+    #: mean power loss over the summary window by source and 'total', W (MODEL.md §11)
+    power_loss_W: dict = field(default_factory=dict)
+    #: mean power the races put into the balls, W (equals the total loss when settled)
+    drive_power_W: float | None = None
 
     def to_dict(self) -> dict:
         d = {k: v for k, v in asdict(self).items() if k not in ("results", "initial_steady_state")}
@@ -329,5 +333,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              summary["kinematic_cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
                              info.solver, info.newton_iterations, info.jacobian_updates,
-                             {k: v for k, v in summary.items() if k not in ("settled",)}, estimate, results,
-                             handle.initialSteadyState)
+                             {k: v for k, v in summary.items() if k not in ("settled", "power_loss_W",
+                                                                              "drive_power_W")},
+                             estimate, results, handle.initialSteadyState, summary["power_loss_W"],
+                             summary["drive_power_W"])

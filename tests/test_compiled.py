@@ -127,6 +127,9 @@ SCENES = {
     "spring chain, no drag": dict(axialForce=300.0, cage=CageModel(kind="spring-chain"), ballDrag=None),
     "pocket play, free outer race": dict(axialForce=600.0, cage=CageModel(clearance=2e-6), outerRace=races.Free()),
     "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
+    # MODEL.md §11b, §11e: the rolling-resistance couple and the thermal film factor
+    "rolling resistance, thermal film, combined load": dict(
+        axialForce=2200.0, radialForce=2000.0, law=ContactLaw(rolling_resistance=True, thermal_film=True)),
     "no spin moment, Fixed inner translation": dict(innerRace=races.Driven(1800, translation="fixed"),
                                                     law=ContactLaw(spin_moment=False)),
     # driven-speed torque (feed-forward of the ramp + feedback) and an inner-land cage
