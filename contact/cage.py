@@ -117,6 +117,23 @@ def land_forces(cage_origin, cage_velocity, race_origin, race_velocity, axis, ra
     return -magnitude[..., None] * n
 
 
+def land_friction_constant(viscosity, radius, width, radial_clearance):
+    """K = 2 π η0 R³ L / c of :func:`land_friction_torque`, N m s (MODEL.md §11d)."""
+    return 2.0 * np.pi * viscosity * radius ** 3 * width / radial_clearance
+
+
+def land_friction_torque(constant, slip_speed, eccentricity_ratio, max_ratio=0.95):
+    """Friction torque of a guiding land's oil film on the cage, N m (MODEL.md §11d): the
+    shear (Petroff) term of the short journal bearing,
+    T = K (w_land - w_cage) / √(1 - ε²), K = 2 π η0 R³ L / c (Hamrock, Schmid & Jacobson,
+    Fundamentals of Machine Elements / Fluid Film Lubrication, short-bearing theory; Harris &
+    Kotzalas use it for the cage land), ε = e / c capped at ``max_ratio`` (the film's
+    thinnest point; contact beyond is the land force's business). Positive drags the cage
+    forward; the land takes the opposite."""
+    eps = np.minimum(np.abs(np.asarray(eccentricity_ratio, dtype=float)), max_ratio)
+    return constant * np.asarray(slip_speed, dtype=float) / np.sqrt(1.0 - eps ** 2)
+
+
 def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius):
     """Sphere drag against each ball's orbital motion through still oil (MODEL.md §8), (n, 3), N:
     F_D = 1/2 C_D rho pi r² v², v the circumferential ball-centre speed about ``axis``."""

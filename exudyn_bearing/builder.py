@@ -322,7 +322,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
     steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
                            sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
-                           contactLaw=contactLaw, ballDrag=ballDrag)
+                           contactLaw=contactLaw, ballDrag=ballDrag, cage=cage)
     if steady is not None:
         e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
         c_loc = steady.ball_orbit_radius * e_r + steady.ball_axial_position * e_z
@@ -422,7 +422,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
 
 
 def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
-                  contactLaw, ballDrag):
+                  contactLaw, ballDrag, cage=None):
     """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
     pure-rolling start ('rolling', or 'auto' where the steady state does not apply). Loads
     given as functions of time start from their values at t = 0, as the quasi-static start."""
@@ -441,7 +441,7 @@ def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rp
         from .steady import steady_state
 
         state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
-                             drag=ballDrag, contact_law=contactLaw)
+                             drag=ballDrag, contact_law=contactLaw, cage=cage)
         if state.converged:
             return state
         why = state.message

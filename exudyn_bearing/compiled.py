@@ -9,6 +9,7 @@ path, the reference): a global force F enters as F, a global torque tau of a
 """
 from __future__ import annotations
 
+import math
 import threading
 from pathlib import Path
 
@@ -128,7 +129,8 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                groove, conformity, sign, ball_radius, pitch_diameter, e_prime, ball_mass, damping_ratio, traction,
                spin_moment, min_film, eta0, c_p, max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
                w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
-               drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, applied, held, driven,
+               drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, applied, held,
+               driven,
                max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
@@ -193,10 +195,23 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                             guide_damping, land, ecc)
         for i in range(3):
             o6[cage_slot, i] += land[0, i]
+        torque = np.zeros(3)
+        if guide_friction > 0.0:  # the land's friction torque about the race axis (MODEL.md §11d)
+            ax = rr[0, guide_race, :, 2]
+            slip = 0.0
+            for i in range(3):
+                slip += (rw[0, guide_race, i] - omega[0, cage_slot, i]) * ax[i]
+            eps = min(ecc[0] / guide_play, 0.95)
+            t_land = guide_friction * slip / math.sqrt(1.0 - eps * eps)
+            for i in range(3):
+                torque[i] = t_land * ax[i]
+            A = rot[0, cage_slot]
+            for i in range(3):
+                o6[cage_slot, 3 + i] += A[0, i] * torque[0] + A[1, i] * torque[1] + A[2, i] * torque[2]
         s = slots[guide_race]
         if s >= 0:  # the race takes the reaction at the cage centre
             reaction = np.zeros((1, 1, n, 6))
-            _add_reaction(reaction, 0, 0, s, rot, pos[0, cage_slot] - pos[0, s], land[0], np.zeros(3), -1.0)
+            _add_reaction(reaction, 0, 0, s, rot, pos[0, cage_slot] - pos[0, s], land[0], torque, -1.0)
             for i in range(6):
                 o6[s, i] += reaction[0, 0, s, i]
     if slots[0] >= 0:
@@ -333,7 +348,7 @@ class CompiledForces:
         self.held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
             self.held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
-        self.guide_race, self.guide = -1, (0.0, 0.0, 0.0)
+        self.guide_race, self.guide = -1, (0.0, 0.0, 0.0, 0.0)
         if con.guide is not None:
             self.guide_race = ("inner", "outer").index(con.guide[0])
             self.guide = tuple(float(x) for x in con.guide[1:])

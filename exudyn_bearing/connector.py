@@ -58,6 +58,13 @@ class CageModel:
         Land contact stiffness, N/m.
     guide_damping : float or None
         N s/m; None: 20 % of critical for the cage mass on ``guide_stiffness``.
+    land_width : float
+        Axial width L of the guiding land, m; > 0 adds the oil film's friction torque between
+        cage and land (MODEL.md §11d: the short-journal shear torque
+        2 π η0 R³ L (w_race - w_cage) / (c √(1 - ε²))). 0 (default): no land friction.
+    land_radius : float or None
+        Radius R of the guiding land, m; None: r_p + D/2 (outer guidance) or r_p - D/2 (inner),
+        the land at the balls' edge.
     """
 
     kind: str = "rigid"
@@ -69,13 +76,15 @@ class CageModel:
     guide_clearance: float = 0.4e-3
     guide_stiffness: float = 1e7
     guide_damping: float | None = None
+    land_width: float = 0.0
+    land_radius: float | None = None
 
     def __post_init__(self) -> None:
         if self.kind not in ("rigid", "spring-chain", "none"):
             raise ValueError(f"kind must be 'rigid', 'spring-chain' or 'none', got {self.kind!r}")
         if self.guidance not in ("outer", "inner", "balls"):
             raise ValueError(f"guidance must be 'outer', 'inner' or 'balls', got {self.guidance!r}")
-        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness"):
+        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness", "land_width"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
@@ -85,6 +94,23 @@ class CageModel:
                 raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
         if self.mass is not None and not (np.isfinite(self.mass) and self.mass > 0):
             raise ValueError(f"mass must be positive, got {self.mass!r}")
+        if self.land_radius is not None and not (np.isfinite(self.land_radius) and self.land_radius > 0):
+            raise ValueError(f"land_radius must be positive, got {self.land_radius!r}")
+        if self.land_width > 0 and (self.kind != "rigid" or self.guidance == "balls"):
+            raise ValueError("land_width: land friction needs a rigid cage guided by a race land "
+                             "(kind='rigid', guidance='inner' or 'outer')")
+        if self.land_width > 0 and self.guide_clearance <= 0:
+            raise ValueError("land_width: the land friction needs a guide_clearance > 0 (its oil film)")
+
+    def land_friction_constant(self, bearing, lubricant) -> float:
+        """K = 2 π η0 R³ L / c of the guiding land's friction torque K (w_land - w_cage) /
+        √(1 - ε²), N m s (MODEL.md §11d); 0 without land friction."""
+        if self.land_width <= 0 or not self.guided:
+            return 0.0
+        side = 1.0 if self.guidance == "outer" else -1.0
+        radius = self.land_radius or bearing.pitch_radius + side * bearing.ball_radius
+        return float(cage_physics.land_friction_constant(lubricant.viscosity, radius, self.land_width,
+                                                         0.5 * self.guide_clearance))
 
     def damping_for(self, ball_mass: float) -> float:
         return 2 * 0.05 * np.sqrt(self.stiffness * ball_mass) if self.damping is None else self.damping
@@ -198,12 +224,19 @@ class BearingConnector:
                                   self.signs, bearing.effective_modulus, bearing.ball_mass)
         self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
         self.cage_damping = cage.damping_for(bearing.ball_mass)
-        self.guide = None  # (race, radial play m, stiffness N/m, damping N s/m) of a land-guided cage
+        # (race, radial play m, stiffness N/m, damping N s/m, friction constant N m s) of a
+        # land-guided cage; the constant 2 pi eta0 R³ L / c of its land friction (MODEL.md §11d)
+        self.guide = None
+        if cage.guided and cage.guide_clearance >= 0.25 * bearing.ball_diameter:
+            raise ValueError(f"guide_clearance: {cage.guide_clearance:g} m of diametral land play is not below a "
+                             f"quarter of the ball diameter ({0.25 * bearing.ball_diameter:g} m); the cage ring "
+                             "would leave the annulus between the races")
         if cage.guided:
             damping = cage.guide_damping
             if damping is None:
                 damping = 2 * 0.2 * np.sqrt(cage.guide_stiffness * cage.mass_for(bearing))
-            self.guide = (cage.guidance, 0.5 * cage.guide_clearance, cage.guide_stiffness, damping)
+            self.guide = (cage.guidance, 0.5 * cage.guide_clearance, cage.guide_stiffness, damping,
+                          cage.land_friction_constant(bearing, lubricant))
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
         self._params_cache = {}
@@ -362,7 +395,7 @@ class BearingConnector:
         """Guiding-land force on the cage (B, 3), N, the guiding race's slot (or None) and
         the cage's eccentricity (B,), m, for a batch of node states (omega GLOBAL);
         :func:`contact.cage.land_forces`."""
-        race, play, stiffness, damping = self.guide
+        race, play, stiffness, damping, _ = self.guide
         s = self.layout["cage"]
         if self._land_kernel is not None:  # the same in one compiled loop (the numpy calls cost ~0.1 ms)
             c = np.ascontiguousarray
@@ -393,14 +426,41 @@ class BearingConnector:
         force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
         return float(e[0]), force[0]
 
+    def land_friction_power(self, t, pos, rot, vel, omega) -> float:
+        """Power the guiding land's friction dissipates in one state, W (0 without it)."""
+        if self.guide is None or self.guide[4] <= 0:
+            return 0.0
+        _, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
+        torque, axis = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
+        race = self.guide[0]
+        _, _, _, w_race, _ = self._race_frame(race, t, pos[None], vel[None], rot[None], omega[None])
+        slip = float((w_race[0] - omega[self.layout["cage"]]) @ axis[0])
+        return float(torque[0]) * slip
+
+    def land_torque(self, t, pos, rot, vel, omega, eccentricity):
+        """Friction torque of the guiding land's oil film on the cage about the race axis,
+        (B,) N m (MODEL.md §11d; the race takes the opposite), and that axis (B, 3)."""
+        race, play, _, _, friction = self.guide
+        _, rotation, _, w_race, _ = self._race_frame(race, t, pos, vel, rot, omega)
+        axis = rotation[..., 2]
+        w_cage = np.einsum("bi,bi->b", omega[:, self.layout["cage"]], axis)
+        w_land = np.einsum("bi,bi->b", w_race, axis)
+        return cage_physics.land_friction_torque(friction, w_land - w_cage, eccentricity / play), axis
+
     def _add_land_force(self, t, pos, rot, vel, omega, out):
-        """Adds the guiding-land force to the cage slot and its reaction (at the cage centre)
-        to the guiding race's slot, in place."""
-        force, slot, _ = self.land_force(t, pos, rot, vel, omega)
-        out[:, self.layout["cage"], :3] += force
+        """Adds the guiding-land force (and the land's friction torque) to the cage slot and
+        their reactions (at the cage centre) to the guiding race's slot, in place."""
+        force, slot, e = self.land_force(t, pos, rot, vel, omega)
+        cage = self.layout["cage"]
+        out[:, cage, :3] += force
+        moment = np.zeros_like(force)
+        if self.guide[4] > 0:
+            torque, axis = self.land_torque(t, pos, rot, vel, omega, e)
+            moment = torque[:, None] * axis
+            out[:, cage, 3:] += np.einsum("bji,bj->bi", rot[:, cage], moment)
         if slot is not None:
             out[:, slot, :3] -= force
-            torque = cross(pos[:, self.layout["cage"]] - pos[:, slot], -force)
+            torque = cross(pos[:, cage] - pos[:, slot], -force) - moment
             out[:, slot, 3:] += np.einsum("bji,bj->bi", rot[:, slot], torque)
 
     def _numpy_forces(self, t, pos, rot, vel, omega):

@@ -212,6 +212,9 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
         outer_moment[k] = -np.sum(cross(s.ball_position - origin, s.outer_forces.force) + s.outer_forces.moment,
                                   axis=0) @ frame
         losses[k] = _body_losses(s)
+        if con.guide is not None and con.guide[4] > 0:
+            pos, rot, vel, wl = con.decode(q[k], q_t[k])
+            losses[k, 2] += con.land_friction_power(time[k], pos, rot, vel, np.einsum("nij,nj->ni", rot, wl))
         for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
             race_force[race][k] = -f.force.sum(axis=0) @ frame
             c = contacts[race]

@@ -73,11 +73,25 @@ class SteadyState:
         return data
 
 
+class _OutOfBudget(Exception):
+    """A start took more residual evaluations than :data:`START_BUDGET`."""
+
+
+#: residual evaluations one start (continuation and joint solve) may take before the next
+#: start axis is tried: converging starts took 160–410 (35-mm bearing, 28 000–72 000 rpm),
+#: a runaway continuation 36 000–47 000 (50–60 s)
+START_BUDGET = 1500
+
+
 class _OneBall:
     """The balance equations of one ball at azimuth 0 (x radial, y circumferential, z axial)."""
 
-    def __init__(self, bearing, lubricant, axial, w_i, w_o, drag, law):
+    def __init__(self, bearing, lubricant, axial, w_i, w_o, drag, law, land=(0.0, 0.0)):
         self.b, self.lub, self.law = bearing, lubricant, law
+        # guiding-land friction of the cage (MODEL.md §11d): (K, guiding race speed); the
+        # pockets pass its torque on to the balls, T/(Z r_c) each against the orbit
+        self.land = land
+        self.calls, self.budget = 0, math.inf
         self.axial, self.w_i, self.w_o = axial, w_i, w_o
         (self.r_gi, self.z_gi), (self.r_go, self.z_go) = bearing.groove_centres()
         d = bearing.ball_diameter
@@ -126,12 +140,17 @@ class _OneBall:
         return kin, ball_race_forces(kin, self.params, self.lub, self.law)
 
     def residual(self, x):
+        self.calls += 1
+        if self.calls > self.budget:
+            raise _OutOfBudget
         w_c, w_b, c, _ = self.unpack(x)
         _, f = self.contacts(x)
         force = f.force[0] + f.force[1] + self.b.ball_mass * c[0] * w_c ** 2 * np.array([1.0, 0.0, 0.0])
         if self.density > 0:
             force += cage_physics.drag_forces(c[None], np.array([[0.0, w_c * c[0], 0.0]]), _E_Z, np.zeros(3),
                                               self.c_d, self.density, self.b.ball_radius)[0]
+        if self.land[0] > 0:  # a centred cage (eccentricity 0)
+            force[1] += self.land[0] * (self.land[1] - w_c) / (self.b.balls * c[0])
         gyro = self.inertia * w_c * np.cross(_E_Z, w_b)
         moment = f.moment[0] + f.moment[1] - gyro
         axial = f.force[0, 2] - self.axial / self.b.balls
@@ -141,7 +160,7 @@ class _OneBall:
 
 def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
                  axial: float, rpm: float, outer_rpm: float = 0.0, drag: BallDrag | None = REFERENCE_DRAG,
-                 contact_law: ContactLaw = ContactLaw(), tol: float = 1e-8) -> SteadyState:
+                 contact_law: ContactLaw = ContactLaw(), cage=None, tol: float = 1e-8) -> SteadyState:
     """Steady rolling state under pure axial load (MODEL.md §12).
 
     Parameters
@@ -156,6 +175,9 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
         Ball drag (MODEL.md §8); None: none.
     contact_law : ContactLaw
         Ball–race physics, as in the dynamic model.
+    cage : CageModel, optional
+        Its guiding land's friction torque (``land_width`` > 0, MODEL.md §11d), with the cage
+        centred, loads the balls through the pockets; None or no land friction: a free cage.
     tol : float
         Largest scaled residual accepted (forces relative to F_a / (Z sin a0)).
 
@@ -183,19 +205,34 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     # the accurate traction rule: the fast rule's ray switching is not smooth enough for a
     # root finder to converge below ~1e-3, while the two rules agree within 1e-2 (MODEL.md §6)
     law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
-    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law)
+    land = (0.0, 0.0)
+    if cage is not None and cage.land_friction_constant(bearing, lubricant) > 0:
+        land = (cage.land_friction_constant(bearing, lubricant), w_o if cage.guidance == "outer" else w_i)
+    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land)
     lo, hi = ball.bounds()
     # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
     # outer-raceway control, the continuation from it can run away: then the exact
     # raceway-control axes (MODEL.md §7, §12)
+    sol, worst, converged, x = None, math.inf, False, np.clip(np.zeros(7), lo, hi)
     for axis in ("free", "outer", "inner"):
-        x = _start(bearing, ball, axial, rpm, outer_rpm, axis=axis)
-        sol = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14, method="trf",
-                            bounds=(lo, hi), max_nfev=2000)
-        worst = float(np.max(np.abs(sol.fun)))
+        ball.calls, ball.budget = 0, START_BUDGET
+        try:
+            x = _start(bearing, ball, axial, rpm, outer_rpm, axis=axis)
+            trial = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14,
+                                  method="trf", bounds=(lo, hi), max_nfev=2000)
+        except _OutOfBudget:
+            continue
+        trial_worst = float(np.max(np.abs(trial.fun)))
+        if trial_worst < worst:
+            sol, worst = trial, trial_worst
         converged = bool(worst <= tol) and not np.any(sol.active_mask != 0)  # a root on a bound is no root
         if converged:
             break
+    ball.budget = math.inf
+    if sol is None:  # every start ran out of its budget
+        return _result(bearing, ball, x, axial, rpm, w_i, w_o, math.inf, False,
+                       f"no steady state found: every start took more than {START_BUDGET} evaluations",
+                       _time.perf_counter() - start)
     message = "converged" if converged else (
         f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
         "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")

@@ -127,6 +127,8 @@ SCENES = {
     "spring chain, no drag": dict(axialForce=300.0, cage=CageModel(kind="spring-chain"), ballDrag=None),
     "pocket play, free outer race": dict(axialForce=600.0, cage=CageModel(clearance=2e-6), outerRace=races.Free()),
     "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
+    # MODEL.md §11d: the outer land's friction torque on the cage (and its reaction)
+    "land friction, outer-guided cage": dict(axialForce=1300.0, cage=CageModel(land_width=0.01)),
     # MODEL.md §11b, §11e: the rolling-resistance couple and the thermal film factor
     "rolling resistance, thermal film, combined load": dict(
         axialForce=2200.0, radialForce=2000.0, law=ContactLaw(rolling_resistance=True, thermal_film=True)),

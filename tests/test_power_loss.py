@@ -59,3 +59,52 @@ def test_loss_rises_with_speed():
     assert high["total"] > low["total"]
     for source in ("ball_drag", "rolling_resistance"):
         assert high[source] > low[source]
+
+
+def test_land_friction_is_the_short_journal_shear_and_closes_the_balance():
+    """Outer-guided cage with a 10-mm land (MODEL.md §11d): the land friction torque is
+    Petroff's 2 pi eta R³ L dw / c over sqrt(1 - eps²) (closed form, by hand), the run's cage
+    loss is that torque times the cage's slip against the fixed land, and the energy still
+    balances within 1 %."""
+    from contact.cage import land_friction_constant, land_friction_torque
+    from exudyn_bearing import REFERENCE_LUBRICANT as LUB
+    from exudyn_bearing.connector import CageModel
+
+    k = land_friction_constant(0.04, 0.09, 0.01, 0.2e-3)
+    assert k == pytest.approx(2 * math.pi * 0.04 * 0.09 ** 3 * 0.01 / 0.2e-3, rel=1e-12)
+    assert land_friction_torque(k, 5.0, 0.6) == pytest.approx(k * 5.0 / 0.8, rel=1e-12)
+    cage = CageModel(land_width=0.01)
+    run = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=cage)
+    loss, drive = _means(run)
+    assert loss["total"] == pytest.approx(drive, rel=0.01)
+    res = run.results
+    m = res.last(1 / 3)
+    radius, play = B.pitch_radius + B.ball_radius, 0.5 * cage.guide_clearance
+    eps = np.minimum(res.cage_eccentricity[m] / play, 0.95)
+    closed = land_friction_constant(LUB.viscosity, radius, 0.01, play) * res.cage_speed[m] ** 2 / np.sqrt(1 - eps ** 2)
+    assert loss["cage"] == pytest.approx(float(np.mean(closed)), rel=0.02)
+    assert loss["cage"] > 1.0
+
+
+@pytest.mark.parametrize("kwargs, key", [(dict(land_width=-1e-3), "land_width"),
+                                         (dict(land_width=5e-3, guidance="balls"), "land_width"),
+                                         (dict(land_radius=0.0), "land_radius")])
+def test_bad_cage_land_input_names_the_key(kwargs, key):
+    from exudyn_bearing.connector import CageModel
+
+    with pytest.raises(ValueError, match=key):
+        CageModel(**kwargs)
+
+
+def test_land_play_beyond_the_annulus_names_the_key():
+    """The 35-mm bearing's 7.144-mm balls leave no room for 2 mm of diametral land play."""
+    from exudyn_bearing.connector import CageModel
+
+    with pytest.raises(ValueError, match="guide_clearance"):
+        simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial=667.0, rpm=28000.0, time=0.001,
+                 cage=CageModel(guide_clearance=2e-3))
+
+
+def test_negative_oil_fraction_names_the_key():
+    with pytest.raises(ValueError, match="oil_volume_fraction"):
+        BallDrag(0.5, -0.01)
