@@ -411,6 +411,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                 for node in nodes:
                     start = mbs_.GetNodeODE2Index(node)
                     indices.extend(range(start, start + 6))
+            if connector.progress is not None:
+                connector.progress(t)
             q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)
             q_t = mbs_.systemData.GetODE2Coordinates_t(configuration=configuration)
             return np.concatenate([np.asarray(q)[indices] + ref, np.asarray(q_t)[indices]]).tolist()

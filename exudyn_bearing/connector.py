@@ -239,6 +239,7 @@ class BearingConnector:
                           cage.land_friction_constant(bearing, lubricant))
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
+        self.progress = None  # the runner's progress reporter while it runs (called with t)
         self._params_cache = {}
         self._compiled = None
         self._jac_spec = None

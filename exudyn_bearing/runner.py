@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+import sys
 import time as _time
 from dataclasses import asdict, dataclass, field, replace
 
@@ -49,6 +50,9 @@ class SolverSettings:
     newton_contractivity : float
         Implicit solvers: modified Newton recomputes the Jacobian when an iteration reduces
         the residual by less than this factor (Exudyn's ``modifiedNewtonContractivity``).
+    progress : bool
+        Print where a run is (simulated time, wall time, time to go) to stderr every
+        :data:`PROGRESS_PERIOD` s of wall time; runs shorter than that print nothing.
     output_step : float
         Period of the recorded states, s.
     """
@@ -61,6 +65,7 @@ class SolverSettings:
     jacobian: str = "block"
     output_step: float = 1e-4
     newton_contractivity: float = 0.5
+    progress: bool = True
 
     def __post_init__(self) -> None:
         if self.solver not in SOLVERS:
@@ -91,6 +96,29 @@ class SolverSettings:
     @property
     def implicit(self) -> bool:
         return self.solver in ("generalized-alpha", "trapezoidal")
+
+
+#: wall time between two progress lines of a run, s
+PROGRESS_PERIOD = 5.0
+
+
+class _Progress:
+    """Progress of a run to stderr, at most every ``period`` s of wall time; called with the
+    simulated time by each bearing's state recorder (builder)."""
+
+    def __init__(self, end_time, period=None, stream=None):
+        self.end, self.stream = end_time, stream
+        self.period = PROGRESS_PERIOD if period is None else period
+        self.start = self.last = _time.perf_counter()
+
+    def __call__(self, t):
+        now = _time.perf_counter()
+        if now - self.last < self.period or not t > 0:
+            return
+        self.last = now
+        done, wall = min(t / self.end, 1.0), now - self.start
+        print(f"exudyn_bearing: t = {t:.4g} of {self.end:g} s ({100 * done:.0f} %), {wall:.0f} s wall, "
+              f"about {wall * (1 - done) / done:.0f} s to go", file=self.stream or sys.stderr, flush=True)
 
 
 @dataclass
@@ -193,6 +221,7 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
             mbs.SetObjectParameter(h.contactObject, "jacobianUserFunction", 0)
     for h in handles:
         h.connector.first_non_finite = None
+        h.connector.progress = _Progress(end_time) if settings.progress and h is handles[0] else None
     s = _exudyn_settings(settings, end_time)
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
@@ -207,6 +236,8 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
                                      + (_ADVICE if settings.implicit and not overloaded else "")) from err
     finally:
         exu.config.printToConsole = printing
+        for h in handles:
+            h.connector.progress = None
     wall = _time.perf_counter() - start
     sol = mbs.sys.get("dynamicSolver")
     it = getattr(sol, "it", None)

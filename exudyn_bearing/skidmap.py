@@ -93,14 +93,15 @@ def _run_point(args) -> dict:
     point, bearing, lubricant, drag, *law = args
     start = _time.perf_counter()
     try:
-        from .runner import simulate
+        from .runner import SolverSettings, simulate
 
         # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
         # (each run from scratch: at most twice the cost of the final one)
         length = point.time if point.time is not None else FIRST_TIME
         while True:
             s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=length,
-                         drag=drag, contact_law=law[0] if law else ContactLaw())
+                         drag=drag, contact_law=law[0] if law else ContactLaw(),
+                         settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
             if point.time is not None or s.settled or length >= MAX_TIME:
                 break
             length = min(2.0 * length, MAX_TIME)

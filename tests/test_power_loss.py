@@ -108,3 +108,20 @@ def test_land_play_beyond_the_annulus_names_the_key():
 def test_negative_oil_fraction_names_the_key():
     with pytest.raises(ValueError, match="oil_volume_fraction"):
         BallDrag(0.5, -0.01)
+
+
+def test_long_runs_report_progress_on_stderr(monkeypatch, capsys):
+    """Issue 16: a run says where it is every PROGRESS_PERIOD s of wall time (here 0: every
+    recorded state), on stderr, with the simulated time and the end time; progress=False and
+    short runs print nothing."""
+    import exudyn_bearing.runner as runner
+    from exudyn_bearing import SolverSettings
+
+    simulate(axial=1300.0, rpm=1800.0, time=0.002)
+    assert "exudyn_bearing: t =" not in capsys.readouterr().err  # 5-s period: a short run is quiet
+    monkeypatch.setattr(runner, "PROGRESS_PERIOD", 0.0)
+    simulate(axial=1300.0, rpm=1800.0, time=0.002)
+    err = capsys.readouterr().err
+    assert "exudyn_bearing: t =" in err and "of 0.002 s" in err and "to go" in err
+    simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
+    assert "exudyn_bearing: t =" not in capsys.readouterr().err
