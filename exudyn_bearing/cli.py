@@ -189,9 +189,14 @@ def _render(args) -> int:
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
     setup = _setup(args.bearing)
+    if args.gif:
+        from pathlib import Path
+
+        if not Path(args.gif).resolve().parent.is_dir():
+            raise ValueError(f"--gif: the folder of {args.gif} does not exist")
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
                        frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction),
-                       bearing=setup.bearing, lubricant=setup.lubricant)
+                       bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 
@@ -283,6 +288,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--backend", choices=("auto", "opengl", "raytracer"), default="auto",
                    help="auto: OpenGL with an X display (e.g. xvfb-run), else the raytracer")
     p.add_argument("--out", required=True, help="output directory")
+    p.add_argument("--gif", help="also write the frames as an animated GIF to this file")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
     p.set_defaults(func=_render)

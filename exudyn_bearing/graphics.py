@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["AddBearingGraphics", "render_frames", "render_run", "slip_color"]
+__all__ = ["AddBearingGraphics", "annotate_frame", "render_frames", "render_run", "slip_color", "write_animation"]
 
 
 def slip_color(slip, scale):
@@ -154,7 +154,47 @@ def AddBearingGraphics(mbs, handle, *, races: bool = True, cage: bool = True, co
     return mbs.AddObject(ObjectGround(visualization=VObjectGround(show=True, graphicsDataUserFunction=draw)))
 
 
-def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="auto", prefix="frame"):
+def annotate_frame(path, t, slip_scale=0.5):
+    """Label a rendered PNG with its simulated time and the slip colour scale of the contact
+    arrows (:func:`slip_color`: green rolling, red at >= ``slip_scale`` m/s), in place
+    (Pillow, which matplotlib brings)."""
+    from PIL import Image, ImageDraw, ImageFont
+
+    image = Image.open(path).convert("RGB")
+    draw = ImageDraw.Draw(image)
+    try:
+        font = ImageFont.load_default(size=14)
+    except TypeError:  # Pillow < 10.1: the fixed bitmap font
+        font = ImageFont.load_default()
+    w, h = image.size
+    draw.rectangle([0, 0, 190, 22], fill=(255, 255, 255))
+    draw.text((6, 3), f"t = {t:.5f} s", fill=(0, 0, 0), font=font)
+    # legend: a colour bar from 0 to slip_scale m/s along the bottom edge
+    x0, x1, y0, y1 = 10, min(210, w - 10), h - 36, h - 24
+    draw.rectangle([x0 - 4, y0 - 16, x1 + 60, h - 4], fill=(255, 255, 255))
+    for x in range(x0, x1):
+        r, g, b, _ = slip_color((x - x0) / (x1 - x0) * slip_scale, slip_scale)
+        draw.line([x, y0, x, y1], fill=(int(255 * r), int(255 * g), int(255 * b)))
+    draw.text((x0, y0 - 16), "contact slip (arrows)", fill=(0, 0, 0), font=font)
+    draw.text((x0, y1 + 1), "0", fill=(0, 0, 0), font=font)
+    draw.text((x1 - 10, y1 + 1), f">= {slip_scale:g} m/s", fill=(0, 0, 0), font=font)
+    image.save(path)
+    return path
+
+
+def write_animation(frames, path, seconds_per_frame=0.4):
+    """An animated GIF of PNG ``frames`` (Pillow), returns its path."""
+    from PIL import Image
+
+    images = [Image.open(f).convert("RGB") for f in frames]
+    if not images:
+        raise ValueError("write_animation: no frames")
+    images[0].save(path, save_all=True, append_images=images[1:], duration=int(1000 * seconds_per_frame), loop=0)
+    return Path(path)
+
+
+def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="auto", prefix="frame",
+                  annotate=True, slip_scale=0.5):
     """Write PNG frames of a finished run (its stored solution, or the current state).
 
     Parameters
@@ -166,6 +206,8 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
         frame each; default: one frame of the current state.
     backend : {'auto', 'opengl', 'raytracer'}
         'auto': OpenGL when an X display is available (``DISPLAY``), else the raytracer.
+    annotate : bool
+        Label each frame with its time and the slip colour scale (:func:`annotate_frame`).
 
     Returns
     -------
@@ -181,6 +223,10 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
         raise ValueError(f"backend must be 'auto', 'opengl' or 'raytracer', got {backend!r}")
     vs = SC.visualizationSettings
     vs.general.autoFitScene = True
+    # Exudyn's own solver text shows the run's last time on every replayed frame: each frame
+    # gets its own time label instead (annotate_frame)
+    vs.general.showSolverInformation = False
+    vs.general.showSolverTime = False
     vs.view0.window.renderWindowSize = list(size)
     vs.openGL.advanced.initialModelRotation = (np.eye(3)).tolist()
     frames = steps if steps is not None else [None]
@@ -212,6 +258,9 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
                 SC.renderer.ZoomAll()
                 image = SC.renderer.RedrawAndGetImage(useRaytracer=True)
                 plt.imsave(path, image)
+            if annotate:
+                annotate_frame(path, float(mbs.systemData.GetTime(exu.ConfigurationType.Visualization))
+                               if state is None else float(state[0]), slip_scale)
             written.append(path)
     finally:
         if backend == "opengl":
@@ -220,12 +269,14 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
 
 
 def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto", contact_law=None, bearing=None, lubricant=None):
+               backend="auto", contact_law=None, bearing=None, lubricant=None, animation=None):
     """Simulate ``bearing`` (default: the reference bearing; ``lubricant`` likewise; inner race
     driven at ``rpm``, outer race fixed) for
     ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
-    the run (the CLI's ``render`` command); ``contact_law`` a
-    :class:`contact.ballrace.ContactLaw` (default: the builder's). Returns the written paths."""
+    the run (the CLI's ``render`` command), each labelled with its time and the slip colour
+    scale; ``contact_law`` a :class:`contact.ballrace.ContactLaw` (default: the builder's);
+    ``animation``: also write the frames as an animated GIF to this path. Returns the
+    written paths (frames, then the animation)."""
     import exudyn as exu
 
     from .builder import CreateAngularContactBearing
@@ -252,4 +303,7 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
         qs, vs = np.zeros(n_sys), np.zeros(n_sys)
         qs[idx], vs[idx] = q[k] - h.connector.reference, q_t[k]
         states.append((float(t[k]), qs, vs))
-    return render_frames(SC, mbs, out_dir, steps=states, size=size, backend=backend)
+    written = render_frames(SC, mbs, out_dir, steps=states, size=size, backend=backend)
+    if animation is not None:
+        written.append(write_animation(written, animation))
+    return written

@@ -35,3 +35,23 @@ def test_opengl_frame_under_xvfb(tmp_path):
     files = sorted(tmp_path.glob("*.png"))
     assert len(files) == 1
     assert_not_blank(files[0])
+
+
+def test_frames_are_labelled_and_animated(tmp_path):
+    """Frames spread over the run carry their time (the label strip differs between frames,
+    the scenes differ too) and the slip legend (a bar running from green to red at the
+    bottom); ``animation`` writes them as a GIF with one image per frame."""
+    from PIL import Image
+
+    gif = tmp_path / "run.gif"
+    files = render_run(tmp_path, axial=1300.0, time=0.0004, frames=2, backend="raytracer", size=(400, 300),
+                       animation=gif)
+    frames, anim = files[:2], files[2]
+    a, b = (plt.imread(f)[..., :3] for f in frames)
+    assert not np.array_equal(a[:22, :190], b[:22, :190])  # "t = ..." labels differ
+    assert not np.array_equal(a[30:-40], b[30:-40])  # and so do the scenes
+    bar = a[a.shape[0] - 30, 10:210]  # one row through the legend bar
+    assert bar[0, 1] > 0.6 and bar[0, 0] < 0.1  # green at 0
+    assert bar[-1, 0] > 0.9 and bar[-1, 1] < 0.1  # red at the slip scale
+    with Image.open(anim) as image:
+        assert image.n_frames == 2
