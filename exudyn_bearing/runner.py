@@ -282,6 +282,11 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
     return info
 
 
+#: summary entries that are SimulationSummary fields of their own (not repeated in ``details``)
+_SUMMARY_FIELDS = ("settled", "power_loss_W", "drive_power_W", "cage_slip_percent", "kinematic_cage_slip_percent",
+                   "cage_speed", "cage_speed_nominal")
+
+
 @dataclass
 class SimulationSummary:
     """Result of :func:`simulate` (the CLI's JSON)."""
@@ -364,7 +369,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              summary["kinematic_cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
                              info.solver, info.newton_iterations, info.jacobian_updates,
-                             {k: v for k, v in summary.items() if k not in ("settled", "power_loss_W",
-                                                                              "drive_power_W")},
+                             # details: what the fields above do not already carry
+                             {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"])

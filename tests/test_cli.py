@@ -74,9 +74,9 @@ def assert_real_png(path, min_bytes=10_000, min_size=(300, 200)):
 
 SIMULATE_KEYS = {"axial", "radial", "rpm", "time", "cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed",
                  "cage_speed_nominal", "settled", "wall_time_s", "steps", "solver", "newton_iterations",
-                 "jacobian_updates", "details", "error_estimate"}
-DETAIL_KEYS = {"cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "cage_speed_nominal",
-               "attitude_yz_deg", "attitude_xz_deg", "max_inner_load", "max_outer_load", "max_inner_slip"}
+                 "jacobian_updates", "details", "error_estimate", "power_loss_W", "drive_power_W"}
+DETAIL_KEYS = {"attitude_yz_deg", "attitude_xz_deg", "max_inner_load", "max_outer_load", "max_inner_slip",
+               "max_traction_coefficient"}
 ESTIMATE_KEYS = {"cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
                  "max_inner_slip"}
 
@@ -96,6 +96,8 @@ def test_simulate_json_has_every_documented_key_with_finite_values(reference_run
     data, _ = reference_run
     assert SIMULATE_KEYS <= set(data), SIMULATE_KEYS - set(data)
     assert DETAIL_KEYS <= set(data["details"]), DETAIL_KEYS - set(data["details"])
+    assert not set(data["details"]) & set(data), "details repeats a top-level key"  # issue 16 item 7
+    assert set(data["power_loss_W"]) >= {"traction", "ball_drag", "total"} and data["drive_power_W"] > 0
     assert {"solver", "step", "relative_tolerance", "output_step"} <= set(data["solver"])
     assert (data["axial"], data["radial"], data["rpm"], data["time"]) == (1300.0, 0.0, 1800.0, 0.005)
     assert data["solver"]["solver"] == "generalized-alpha" and data["solver"]["step"] == 1e-4  # CLI defaults
