@@ -53,17 +53,22 @@ def shaft_bearings(preload):
             ShaftBearing(REFERENCE_BEARING, (0.0, 0.0, half), BACK, (0.0, 0.0, half - preload))]
 
 
-def build(mbs, rpm=1800.0, tangential=2000.0, preload=5e-6, ramp=0.01, show=False):
-    """Add the shaft, its speed constraint, the gear load and both bearings to ``mbs``;
-    returns (shaft body, [bearing handles], (force, moment))."""
+def build(mbs, rpm=1800.0, tangential=2000.0, preload=5e-6, ramp=0.01, show=False,
+          node_type=exu.NodeType.RotationRotationVector, hold_speed=True):
+    """Add the shaft, its speed constraint (``hold_speed``), the gear load and both bearings
+    to ``mbs``; returns (shaft body, [bearing handles], (force, moment)). ``node_type``: the
+    shaft's Exudyn node type (Exudyn's default is Euler parameters; the races then sit on
+    light adapter bodies joined to the shaft)."""
     omega = rpm * np.pi / 30
     shaft = mbs.CreateRigidBody(inertia=InertiaCylinder(density=7850.0, length=0.3, outerRadius=0.045, axis=2),
                                 referencePosition=[0.0, 0.0, 0.0], initialAngularVelocity=[0.0, 0.0, omega],
-                                nodeType=exu.NodeType.RotationRotationVector, returnDict=True)
+                                nodeType=node_type, returnDict=True)
     body = shaft["bodyNumber"]
-    # generator: holds the shaft speed (velocity coordinate 5 is the local omega_z)
-    mbs.CreateCoordinateConstraint(itemNumbers=[None, body], coordinates=[None, 5], offset=omega,
-                                   velocityLevel=True, show=False)
+    if hold_speed:  # generator: holds the shaft speed (velocity coordinate 5 is the local omega_z)
+        if node_type != exu.NodeType.RotationRotationVector:
+            raise ValueError("hold_speed needs node_type=exu.NodeType.RotationRotationVector")
+        mbs.CreateCoordinateConstraint(itemNumbers=[None, body], coordinates=[None, 5], offset=omega,
+                                       velocityLevel=True, show=False)
     force, moment = gear_load(tangential)
 
     def ramped(vector):

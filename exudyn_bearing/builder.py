@@ -133,6 +133,67 @@ def _ring_inertia(mass, r_in, r_out, width):
     return i_radial, i_axial
 
 
+#: node types a race may sit on (races.OnBody) -> (rotation matrix, local G matrix) of
+#: their rotation coordinates; Lie-group nodes are the connector's own, others get an adapter
+_NODE_KINEMATICS = {
+    "RigidBodyRotVecLG": ("RotationVector2RotationMatrix", None),
+    "RigidBodyEP": ("EulerParameters2RotationMatrix", "EulerParameters2GLocal"),
+    "RigidBodyRxyz": ("RotXYZ2RotationMatrix", "RotXYZ2GLocal"),
+}
+
+#: an adapter race body's mass and inertia as a fraction of the default ring's (it only
+#: carries the race frame; the user's body carries the mass)
+ADAPTER_MASS_FRACTION = 1e-3
+
+
+def _node_state(mbs, node):
+    """(position m, rotation matrix, velocity m/s, GLOBAL angular velocity rad/s) of a rigid-body
+    node's initial state (reference + initial coordinates), for the node types of
+    :data:`_NODE_KINEMATICS`."""
+    import exudyn.rigidBodyUtilities as rbu
+
+    kind = mbs.GetNode(node)["nodeType"]
+    ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
+    init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
+    init_t = np.asarray(mbs.GetNodeParameter(node, "initialVelocities"), dtype=float)
+    to_matrix, to_g = _NODE_KINEMATICS[kind]
+    params = ref[3:] + init[3:]
+    rot = np.asarray(getattr(rbu, to_matrix)(params), dtype=float)
+    if to_g is None:  # Lie-group nodes: velocity coordinates are the local angular velocity
+        w_local = init_t[3:]
+    else:
+        w_local = np.asarray(getattr(rbu, to_g)(params), dtype=float) @ init_t[3:]
+    return ref[:3] + init[:3], rot, init_t[:3], rot @ w_local
+
+
+def _race_adapter(mbs, bearing, race, which, node_type):
+    """A race frame on a body whose node is not a rotation-vector Lie-group node: a light
+    race body with such a node (:data:`ADAPTER_MASS_FRACTION` of the default ring), joined
+    rigidly to the user's body at the race position by an ``ObjectJointGeneric`` (all six
+    axes); returns its (body, node). The joint passes the bearing's forces to the user's body
+    (Exudyn's implicit solvers; its explicit ones refuse the constraint, as they refuse
+    Euler-parameter nodes)."""
+    from exudyn.utilities import MarkerBodyRigid, ObjectJointGeneric, RigidBodyInertia
+
+    pos_node, rot_node, v_node, w_node = _node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
+    local_p = np.asarray(race.local_position, dtype=float)
+    local_r = np.asarray(race.local_rotation, dtype=float)
+    mass, (i_r, i_a) = _default_race_body(bearing, race, which)
+    f = ADAPTER_MASS_FRACTION
+    d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=f * mass, inertiaTensor=np.diag([f * i_r, f * i_r, f * i_a])),
+                            referencePosition=pos_node + rot_node @ local_p, referenceRotationMatrix=rot_node @ local_r,
+                            initialVelocity=v_node + np.cross(w_node, rot_node @ local_p),
+                            initialAngularVelocity=w_node, nodeType=node_type, returnDict=True)
+    import exudyn as exu
+
+    # marker 0 carries the race frame on the user's body (Exudyn 1.13: rotation in its localHT)
+    m_user = mbs.AddMarker(MarkerBodyRigid(bodyNumber=race.body,
+                                           localHT=exu.HT(rotation=local_r.tolist(), translation=local_p.tolist())))
+    m_race = mbs.AddMarker(MarkerBodyRigid(bodyNumber=d["bodyNumber"], localPosition=[0.0, 0.0, 0.0]))
+    mbs.AddObject(ObjectJointGeneric(markerNumbers=[m_user, m_race], constrainedAxes=[1] * 6))
+    return d["bodyNumber"], d["nodeNumber"]
+
+
 def _default_race_body(bearing: Bearing, race: Race, which: str):
     """Mass and inertia of a steel ring one ball diameter wide and 0.6 D thick, next to the
     groove, unless the Race gives them."""
@@ -251,10 +312,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             raise ValueError(f"{name} must be a races.Race, got {race!r}")
         if race.kind == "body":  # checked before anything is added to mbs
             node_type = mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"]
-            if node_type != "RigidBodyRotVecLG":
-                raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing needs a "
-                                 "rotation-vector Lie-group node: create that body with "
-                                 "nodeType=exu.NodeType.RotationRotationVector")
+            if node_type not in _NODE_KINEMATICS:
+                raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing takes rigid-body "
+                                 "nodes of type " + ", ".join(_NODE_KINEMATICS) + ": create that body with "
+                                 "nodeType=exu.NodeType.RotationEulerParameters (Exudyn's default) or "
+                                 "RotationRotationVector")
     axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
     axial, radial = float(axial_of_t(0.0)), float(radial_of_t(0.0))
     loaded = bool(axial or radial) or callable(axialForce) or callable(radialForce)
@@ -269,15 +331,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     relative = np.zeros(5)
     for name, race, sign in (("inner", inner, 1.0), ("outer", outer, -1.0)):
         if race.kind == "body":
-            node = mbs.GetObject(race.body)["nodeNumber"]
-            ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
-            init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
-            init_t = np.asarray(mbs.GetNodeParameter(node, "initialVelocities"), dtype=float)
-            pos_node = ref[:3] + init[:3]
-            rot_node = _rotvec_matrix(ref[3:] + init[3:])
+            pos_node, rot_node, _, w_node = _node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
             race_origin = pos_node + rot_node @ np.asarray(race.local_position)
             relative[:3] += sign * frame.T @ (race_origin - origin)
-            speed[name] = float(axis @ (rot_node @ init_t[3:]))  # velocity coordinates: local omega
+            speed[name] = float(axis @ w_node)
     w_i, w_o = speed["inner"], speed["outer"]
     rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
     if innerRaceDisplacement is not None:
@@ -366,7 +423,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     for name, race, shift in (("inner", inner, relative[:3]), ("outer", outer, np.zeros(3))):
         if race.kind == "fixed":
             continue
-        if race.kind == "body":
+        if race.kind == "body" and mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"] != "RigidBodyRotVecLG":
+            body, node = _race_adapter(mbs, bearing, race, name, node_type)
+            race_frames[name] = (np.zeros(3), np.eye(3))
+        elif race.kind == "body":
             body = race.body
             node = mbs.GetObject(body)["nodeNumber"]
             race_frames[name] = (np.asarray(race.local_position, dtype=float), np.asarray(race.local_rotation, dtype=float))

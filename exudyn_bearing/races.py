@@ -85,6 +85,9 @@ def Free(rpm: float = 0.0, mass: float | None = None, inertia=None) -> Race:
 
 
 def OnBody(bodyNumber: int, localPosition=(0.0, 0.0, 0.0), localRotation=np.eye(3)) -> Race:
-    """Race fixed to an existing Exudyn rigid body (``NodeRigidBodyRotVecLG`` node)."""
+    """Race fixed to an existing Exudyn rigid body: any rigid-body node of Exudyn's
+    ``CreateRigidBody`` (Euler parameters, its default; Tait–Bryan angles; rotation vector).
+    A rotation-vector Lie-group node carries the race frame itself; others get a light race
+    body joined rigidly to them (``builder._race_adapter``; implicit solvers)."""
     return Race("body", body=int(bodyNumber), local_position=tuple(float(v) for v in localPosition),
                 local_rotation=tuple(tuple(float(v) for v in row) for row in np.asarray(localRotation)))
