@@ -37,6 +37,16 @@ class QuasiStaticError(RuntimeError):
     """The Newton–Raphson load-distribution solve did not converge."""
 
 
+#: units of :meth:`LoadDistribution.to_dict`'s keys ('-': none)
+LOAD_DISTRIBUTION_UNITS = {
+    "azimuth": "rad", "inner_load": "N", "outer_load": "N", "inner_contact_angle": "rad",
+    "outer_contact_angle": "rad", "inner_deflection": "m", "outer_deflection": "m", "ball_radius_offset": "m",
+    "ball_axial_offset": "m", "displacement": "m", "tilt": "rad", "reaction_moment": "N m",
+    "centrifugal_force": "N", "cage_speed": "rad/s", "cage_force": "N", "race_force": "N", "race_moment": "N m",
+    "axial_displacement": "m", "radial_displacement": "m",
+}
+
+
 @dataclass(frozen=True)
 class LoadDistribution:
     """Per-ball result of :func:`solve_load_distribution` (arrays of length Z, SI units)."""
@@ -70,14 +80,15 @@ class LoadDistribution:
         return float(max(self.inner_load.max(), self.outer_load.max()))
 
     def to_dict(self) -> dict:
-        """JSON-ready dictionary (lists, SI units, angles in rad)."""
+        """JSON-ready dictionary (the CLI's ``loads --json``): this class's field names and SI
+        values (angles in rad), the angles also in degrees (``*_deg``), the inner race's axial
+        and radial displacement, and ``units``, the unit of every key."""
         out = {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in asdict(self).items()}
-        out["ball_loads_inner"] = out.pop("inner_load")
-        out["ball_loads_outer"] = out.pop("outer_load")
-        out["contact_angles_inner"] = out.pop("inner_contact_angle")
-        out["contact_angles_outer"] = out.pop("outer_contact_angle")
+        for name in ("azimuth", "inner_contact_angle", "outer_contact_angle"):
+            out[f"{name}_deg"] = np.degrees(getattr(self, name)).tolist()
         dx, dy, dz = self.displacement
-        out["displacement"] = {"axial": float(dz), "radial": float(math.hypot(dx, dy)), "x": float(dx), "y": float(dy), "z": float(dz)}
+        out["axial_displacement"], out["radial_displacement"] = float(dz), float(math.hypot(dx, dy))
+        out["units"] = {k: LOAD_DISTRIBUTION_UNITS.get(k, "deg" if k.endswith("_deg") else "-") for k in out}
         return out
 
 

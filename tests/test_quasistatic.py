@@ -308,10 +308,15 @@ def test_cli_json():
     out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--radial", "0",
                           "--rpm", "0", "--json"], capture_output=True, text=True, check=True).stdout
     data = json.loads(out)
-    assert len(data["ball_loads_inner"]) == 16 and len(data["contact_angles_outer"]) == 16
+    assert len(data["inner_load"]) == 16 and len(data["outer_contact_angle"]) == 16
     q_i = jones_harris(1300.0)[0]
-    np.testing.assert_allclose(data["ball_loads_inner"], q_i, rtol=1e-7)
-    assert data["displacement"]["axial"] > 0 and data["displacement"]["radial"] == pytest.approx(0, abs=1e-9)
+    np.testing.assert_allclose(data["inner_load"], q_i, rtol=1e-7)
+    assert data["axial_displacement"] > 0 and data["radial_displacement"] == pytest.approx(0, abs=1e-9)
+    # issue 16 item 7: the Python names, degrees beside radians, a unit for every key
+    res = solve_load_distribution(B, axial=1300.0, rpm=0.0)
+    assert set(vars(res)) <= set(data) and set(data["units"]) == set(data) - {"units"}
+    np.testing.assert_allclose(data["inner_contact_angle_deg"], np.degrees(data["inner_contact_angle"]), rtol=1e-12)
+    assert data["units"]["inner_load"] == "N" and data["units"]["azimuth_deg"] == "deg"
     table = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--rpm", "1800",
                             "--fixed-angle"], capture_output=True, text=True, check=True).stdout
     assert "fixed-angle" in table
