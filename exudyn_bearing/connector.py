@@ -427,16 +427,18 @@ class BearingConnector:
         force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
         return float(e[0]), force[0]
 
-    def land_friction_power(self, t, pos, rot, vel, omega) -> float:
-        """Power the guiding land's friction dissipates in one state, W (0 without it)."""
+    def land_friction_power(self, t, pos, rot, vel, omega) -> tuple:
+        """(power the guiding land's friction dissipates, power its race puts in through it),
+        W, of one state ((0, 0) without land friction): T (w_race - w_cage) and T w_race."""
         if self.guide is None or self.guide[4] <= 0:
-            return 0.0
+            return 0.0, 0.0
         _, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
         torque, axis = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
         race = self.guide[0]
         _, _, _, w_race, _ = self._race_frame(race, t, pos[None], vel[None], rot[None], omega[None])
-        slip = float((w_race[0] - omega[self.layout["cage"]]) @ axis[0])
-        return float(torque[0]) * slip
+        w_land = float(w_race[0] @ axis[0])
+        slip = w_land - float(omega[self.layout["cage"]] @ axis[0])
+        return float(torque[0]) * slip, float(torque[0]) * w_land
 
     def land_torque(self, t, pos, rot, vel, omega, eccentricity):
         """Friction torque of the guiding land's oil film on the cage about the race axis,

@@ -91,6 +91,8 @@ class BearingResults:
     cage_loss: np.ndarray = None
     #: power dissipated at the cage's guiding land, (T,), W (race translation neglected)
     land_loss: np.ndarray = None
+    #: power the guiding race puts into the cage through the land's friction torque, (T,), W
+    land_drive: np.ndarray = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -135,14 +137,17 @@ class BearingResults:
         return out
 
     def drive_power(self) -> np.ndarray:
-        """Power the races put into the balls through the contacts, (T,), W: -(M_z w) of the
-        balls' moment on each race about the bearing axis. In a settled run it equals the total
-        of :meth:`power_loss` (energy balance; race translation neglected)."""
+        """Power the races put into the bearing, (T,), W: -(M_z w) of the balls' moment on each
+        race about the bearing axis, plus what a guiding race puts into the cage through its
+        land's friction torque. In a settled run it equals the total of :meth:`power_loss`
+        (energy balance; race translation neglected)."""
         if self.inner_race_moment is None:  # results assembled without the race reactions
             return np.full_like(self.time, np.nan, dtype=float)
         p = -self.inner_race_moment[:, 2] * self.inner_speed
         if self.outer_race_moment is not None:
             p = p - self.outer_race_moment[:, 2] * self.outer_speed
+        if self.land_drive is not None:
+            p = p + self.land_drive
         return p
 
     def settled(self, tolerance_percent=0.1, minimum_time=0.05) -> bool:
@@ -176,6 +181,7 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
     inner_moment = np.zeros((steps, 3))
     outer_moment = np.zeros((steps, 3))
     losses = np.zeros((steps, 3))  # ball drag, cage pockets, guiding land
+    land_drive = np.zeros(steps)  # power the guiding race puts into the cage through the land film
     land = np.zeros((steps, 2))  # cage eccentricity, land force
     for k in range(steps):
         s = con.evaluate(time[k], q[k], q_t[k], details=True)
@@ -214,7 +220,9 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
         losses[k] = _body_losses(s)
         if con.guide is not None and con.guide[4] > 0:
             pos, rot, vel, wl = con.decode(q[k], q_t[k])
-            losses[k, 2] += con.land_friction_power(time[k], pos, rot, vel, np.einsum("nij,nj->ni", rot, wl))
+            lost, put_in = con.land_friction_power(time[k], pos, rot, vel, np.einsum("nij,nj->ni", rot, wl))
+            losses[k, 2] += lost
+            land_drive[k] = put_in
         for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
             race_force[race][k] = -f.force.sum(axis=0) @ frame
             c = contacts[race]
@@ -235,7 +243,7 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
                           cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
                           w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
                           race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1], mu_max,
-                          warning, outer_moment, losses[:, 0], losses[:, 1], losses[:, 2])
+                          warning, outer_moment, losses[:, 0], losses[:, 1], losses[:, 2], land_drive)
 
 
 def _body_losses(s) -> tuple:

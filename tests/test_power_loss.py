@@ -77,6 +77,10 @@ def test_land_friction_is_the_short_journal_shear_and_closes_the_balance():
     run = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=cage)
     loss, drive = _means(run)
     assert loss["total"] == pytest.approx(drive, rel=0.01)
+    # guided by the driven inner race, the power its land torque puts in is drive power too
+    inner = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(guidance="inner", land_width=0.01))
+    loss_i, drive_i = _means(inner)
+    assert loss_i["total"] == pytest.approx(drive_i, rel=0.01) and loss_i["cage"] > 1.0
     res = run.results
     m = res.last(1 / 3)
     radius, play = B.pitch_radius + B.ball_radius, 0.5 * cage.guide_clearance
