@@ -98,6 +98,11 @@ class SolverSettings:
         return self.solver in ("generalized-alpha", "trapezoidal")
 
 
+#: exceptions that mean a bug, passed on as they are instead of being reported as a solver
+#: failure with solver advice (Exudyn wraps a user function's own exception in a ModelError
+#: saying "Error in Python USER FUNCTION" and naming it: passed on too when it names one)
+_PROGRAMMING_ERRORS = (NameError, AttributeError, TypeError, KeyError, IndexError, ImportError)
+
 #: wall time between two progress lines of a run, s
 PROGRESS_PERIOD = 5.0
 
@@ -230,6 +235,10 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
                               showCausingItems=False)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
+        text = str(err)
+        if isinstance(err, _PROGRAMMING_ERRORS) or ("Error in Python USER FUNCTION" in text and any(
+                f"{kind.__name__}:" in text for kind in _PROGRAMMING_ERRORS)):
+            raise  # a bug in a user function (ours or the scene's) is not a solver failure
         where = _where(handles, mbs)
         overloaded = "overloads the bearing" in where or "cannot carry it" in where
         raise BearingSimulationError(f"solver {settings.solver} failed at step {settings.step:g} s{where}: {err}"

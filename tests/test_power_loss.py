@@ -129,3 +129,19 @@ def test_long_runs_report_progress_on_stderr(monkeypatch, capsys):
     assert "exudyn_bearing: t =" in err and "of 0.002 s" in err and "to go" in err
     simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
     assert "exudyn_bearing: t =" not in capsys.readouterr().err
+
+
+def test_a_bug_in_a_user_function_is_not_reported_as_a_solver_failure(monkeypatch):
+    """A NameError raised inside the force user function reaches the caller as Exudyn reports
+    it (the user-function error with the NameError), not as a BearingSimulationError
+    advising a smaller step."""
+    from exudyn_bearing.errors import BearingSimulationError
+    from exudyn_bearing.connector import BearingConnector
+
+    def broken(self, t, q, q_t):
+        raise NameError("name 'x' is not defined")
+
+    monkeypatch.setattr(BearingConnector, "residual_forces", broken)
+    with pytest.raises(Exception, match="NameError: name 'x' is not defined") as caught:
+        simulate(axial=1300.0, rpm=1800.0, time=0.001)
+    assert not isinstance(caught.value, BearingSimulationError)
