@@ -57,7 +57,6 @@ def _loads(args) -> int:
 
 
 def _simulate(args) -> int:
-    from contact.ballrace import ContactLaw
     from .runner import SolverSettings, simulate
 
     setup = _setup(args.bearing)
@@ -71,9 +70,7 @@ def _simulate(args) -> int:
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
-                       contact_law=ContactLaw(traction=args.traction, quadrature_order=args.order,
-                                              rolling_resistance=args.rolling_resistance,
-                                              thermal_film=args.thermal_film),
+                       contact_law=_law(args, quadrature_order=args.order),
                        error_estimate=args.error_estimate)
     data = summary.to_dict()
     if args.plot:
@@ -113,13 +110,12 @@ def _simulate(args) -> int:
 
 
 def _steady(args) -> int:
-    from contact.ballrace import ContactLaw
     from .skidmap import hirano_minimum_axial
     from .steady import gyroscopic_minimum_axial, steady_state
 
     setup = _setup(args.bearing)
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
-                         drag=None if args.no_drag else setup.drag, contact_law=ContactLaw(traction=args.traction))
+                         drag=None if args.no_drag else setup.drag, contact_law=_law(args))
     data = state.to_dict()
     data["hirano_minimum_axial_N"] = hirano_minimum_axial(setup.bearing, args.rpm)
     data["gyroscopic_minimum_axial_N"] = gyroscopic_minimum_axial(
@@ -162,13 +158,12 @@ def _skid_map(args) -> int:
     print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
           f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
-    from contact.ballrace import ContactLaw
 
     result = skidmap.skid_map(setup.bearing, setup.lubricant, axial=skidmap.parse_range(args.axial),
                               radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
                               time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
                               progress=lambda line: print(line, flush=True),
-                              contact_law=ContactLaw(traction=args.traction), refine=not args.no_refine)
+                              contact_law=_law(args), refine=not args.no_refine)
     print(result.markdown())
     print(f"wrote {args.out}/" + ", ".join(result.files))
     if "skid_map.png" not in result.files:
@@ -184,7 +179,6 @@ def _skid_map(args) -> int:
 def _render(args) -> int:
     from .graphics import render_run
 
-    from contact.ballrace import ContactLaw
 
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
@@ -195,16 +189,29 @@ def _render(args) -> int:
         if not Path(args.gif).resolve().parent.is_dir():
             raise ValueError(f"--gif: the folder of {args.gif} does not exist")
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
-                       frames=args.frames, backend=args.backend, contact_law=ContactLaw(traction=args.traction),
+                       frames=args.frames, backend=args.backend, contact_law=_law(args),
                        bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
+
+
+def _law(args, **kw):
+    """The ContactLaw of a command's --traction, --rolling-resistance and --thermal-film."""
+    from contact.ballrace import ContactLaw
+
+    return ContactLaw(traction=args.traction, rolling_resistance=args.rolling_resistance,
+                      thermal_film=args.thermal_film, **kw)
 
 
 def _traction_option(p) -> None:
     p.add_argument("--traction", choices=TRACTION_MODELS, default=ContactLawDefaults.traction,
                    help="ball-race traction law (MODEL.md §6, §6a): crook-limited = Crook with the lubricant's "
                         "limiting shear stress (default), crook = the paper's pure Crook law")
+    # the losses beyond the paper (MODEL.md §11), off by default
+    p.add_argument("--rolling-resistance", action="store_true",
+                   help="hydrodynamic rolling resistance at each contact (MODEL.md §11b)")
+    p.add_argument("--thermal-film", action="store_true",
+                   help="inlet-shear-heating reduction of the film thickness (MODEL.md §11e)")
 
 
 class _DefaultsFormatter(argparse.HelpFormatter):
@@ -262,10 +269,6 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
     _traction_option(p)
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
-    p.add_argument("--rolling-resistance", action="store_true",
-                   help="hydrodynamic rolling resistance at each contact (MODEL.md §11b)")
-    p.add_argument("--thermal-film", action="store_true",
-                   help="inlet-shear-heating reduction of the film thickness (MODEL.md §11e)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")
