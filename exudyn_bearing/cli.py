@@ -179,7 +179,6 @@ def _skid_map(args) -> int:
 def _render(args) -> int:
     from .graphics import render_run
 
-
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
     setup = _setup(args.bearing)
