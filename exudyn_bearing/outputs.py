@@ -114,8 +114,18 @@ class BearingResults:
             "max_traction_coefficient": float(self.max_traction_coefficient),
             "power_loss_W": {k: float(np.mean(v[m])) for k, v in self.power_loss().items()},
             "drive_power_W": float(np.mean(self.drive_power()[m])),
+            "energy_balance_percent": self.energy_balance_percent(fraction),
             "settled": self.settled(settle_tolerance_percent),
         }
+
+    def energy_balance_percent(self, fraction=1 / 3) -> float:
+        """(drive power - total loss) / drive power over the last ``fraction``, % (MODEL.md §11):
+        near 0 in a settled run; what remains is kinetic energy still changing or the
+        integrator's numerical damping — a check of the run's accuracy."""
+        m = self.last(fraction)
+        drive = float(np.mean(self.drive_power()[m]))
+        loss = float(np.mean(self.power_loss()["total"][m]))
+        return 100.0 * (drive - loss) / drive if drive else float("nan")
 
     def power_loss(self) -> dict:
         """Power lost by source, W, as time series (T,) (MODEL.md §11): 'traction' (traction

@@ -31,6 +31,7 @@ def test_drive_power_equals_total_loss(law):
     assert loss["traction"] > 0 and loss["ball_drag"] > 0
     assert (loss["rolling_resistance"] > 0) == law.rolling_resistance
     assert run.power_loss_W["total"] == pytest.approx(loss["total"], rel=1e-12)
+    assert run.details["energy_balance_percent"] == pytest.approx(100 * (drive - loss["total"]) / drive, rel=1e-9)
 
 
 def test_switched_off_sources_are_zero_and_drag_is_the_closed_form():
