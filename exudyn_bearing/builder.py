@@ -621,9 +621,3 @@ def raceway_control(centre, inner_point, outer_point, inner_speed, outer_speed, 
             x, y = np.linalg.solve(a[:, 1:], b - a[:, 0] * cage_speed)
         omega[j] = x * e_r[j] + y * e_z
     return w_c, omega
-
-
-def _rotvec_matrix(nu):
-    from contact.kinematics import rotation_matrices
-
-    return rotation_matrices(np.asarray(nu, dtype=float)[None])[0]

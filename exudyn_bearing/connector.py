@@ -433,22 +433,20 @@ class BearingConnector:
         if self.guide is None or self.guide[4] <= 0:
             return 0.0, 0.0
         _, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
-        torque, axis = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
-        race = self.guide[0]
-        _, _, _, w_race, _ = self._race_frame(race, t, pos[None], vel[None], rot[None], omega[None])
-        w_land = float(w_race[0] @ axis[0])
-        slip = w_land - float(omega[self.layout["cage"]] @ axis[0])
-        return float(torque[0]) * slip, float(torque[0]) * w_land
+        torque, axis, w_land = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
+        slip = float(w_land[0]) - float(omega[self.layout["cage"]] @ axis[0])
+        return float(torque[0]) * slip, float(torque[0]) * float(w_land[0])
 
     def land_torque(self, t, pos, rot, vel, omega, eccentricity):
         """Friction torque of the guiding land's oil film on the cage about the race axis,
-        (B,) N m (MODEL.md §11d; the race takes the opposite), and that axis (B, 3)."""
+        (B,) N m (MODEL.md §11d; the race takes the opposite), that axis (B, 3) and the land's
+        speed about it (B,) rad/s."""
         race, play, _, _, friction = self.guide
         _, rotation, _, w_race, _ = self._race_frame(race, t, pos, vel, rot, omega)
         axis = rotation[..., 2]
         w_cage = np.einsum("bi,bi->b", omega[:, self.layout["cage"]], axis)
         w_land = np.einsum("bi,bi->b", w_race, axis)
-        return cage_physics.land_friction_torque(friction, w_land - w_cage, eccentricity / play), axis
+        return cage_physics.land_friction_torque(friction, w_land - w_cage, eccentricity / play), axis, w_land
 
     def _add_land_force(self, t, pos, rot, vel, omega, out):
         """Adds the guiding-land force (and the land's friction torque) to the cage slot and
@@ -458,7 +456,7 @@ class BearingConnector:
         out[:, cage, :3] += force
         moment = np.zeros_like(force)
         if self.guide[4] > 0:
-            torque, axis = self.land_torque(t, pos, rot, vel, omega, e)
+            torque, axis, _ = self.land_torque(t, pos, rot, vel, omega, e)
             moment = torque[:, None] * axis
             out[:, cage, 3:] += np.einsum("bji,bj->bi", rot[:, cage], moment)
         if slot is not None:

@@ -206,8 +206,9 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     # root finder to converge below ~1e-3, while the two rules agree within 1e-2 (MODEL.md §6)
     law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
     land = (0.0, 0.0)
-    if cage is not None and cage.land_friction_constant(bearing, lubricant) > 0:
-        land = (cage.land_friction_constant(bearing, lubricant), w_o if cage.guidance == "outer" else w_i)
+    friction = 0.0 if cage is None else cage.land_friction_constant(bearing, lubricant)
+    if friction > 0:
+        land = (friction, w_o if cage.guidance == "outer" else w_i)
     ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land)
     lo, hi = ball.bounds()
     # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
