@@ -194,17 +194,27 @@ def _race_adapter(mbs, bearing, race, which, node_type):
     return d["bodyNumber"], d["nodeNumber"]
 
 
-def _default_race_body(bearing: Bearing, race: Race, which: str):
-    """Mass and inertia of a steel ring one ball diameter wide and 0.6 D thick, next to the
-    groove, unless the Race gives them."""
+def race_ring_section(bearing: Bearing, which: str, mass: float | None = None):
+    """(bore radius, outside radius, width) of the race ring the model uses, m: a steel ring
+    1.5 D wide next to the groove (shoulder 0.3 D from the pitch circle), 0.6 D thick,
+    or as thick as ``mass`` (kg) makes it at that width. Both the default mass and inertia
+    and the renderer's race graphics come from it, so the drawn ring is the modelled one."""
     d = bearing.ball_diameter
+    width = 1.5 * d
+    area = None if mass is None else mass / (bearing.race_material.density * math.pi * width)
     if which == "inner":
         r_out = bearing.pitch_radius - 0.3 * d
-        r_in = r_out - 0.6 * d
+        # a ring heavier than a solid disc of this width is drawn as that disc
+        r_in = r_out - 0.6 * d if area is None else math.sqrt(max(r_out ** 2 - area, 0.0))
     else:
         r_in = bearing.pitch_radius + 0.3 * d
-        r_out = r_in + 0.6 * d
-    width = 1.5 * d
+        r_out = r_in + 0.6 * d if area is None else math.sqrt(r_in ** 2 + area)
+    return r_in, r_out, width
+
+
+def _default_race_body(bearing: Bearing, race: Race, which: str):
+    """Mass and inertia of the race ring (:func:`race_ring_section`), unless the Race gives them."""
+    r_in, r_out, width = race_ring_section(bearing, which, race.mass)
     mass = race.mass or bearing.race_material.density * math.pi * (r_out ** 2 - r_in ** 2) * width
     inertia = race.inertia or _ring_inertia(mass, r_in, r_out, width)
     return mass, inertia

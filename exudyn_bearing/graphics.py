@@ -39,23 +39,24 @@ def _load_color(ratio):
     return [x, 0.2, 1.0 - x, 0.5]
 
 
-def _race_contour(bearing, which, n_arc=24):
+def _race_contour(bearing, which, mass=None, n_arc=24):
     """(axial, radial) contour of a race cross-section with its groove, m, in the race
-    frame (groove centre at the bearing-frame position of MODEL.md §2)."""
+    frame (groove centre at the bearing-frame position of MODEL.md §2): the modelled ring
+    of :func:`exudyn_bearing.builder.race_ring_section` (``mass``: the race body's, kg)."""
+    from .builder import race_ring_section
+
     (ri, zi), (ro, zo) = bearing.groove_centres()
     d = bearing.ball_diameter
-    width = 1.5 * d
+    r_in, r_out, width = race_ring_section(bearing, which, mass)
     if which == "inner":
         rc, zc, rg = ri, zi, bearing.inner_conformity * d
-        shoulder = bearing.pitch_radius - 0.3 * d
-        bore = shoulder - 0.6 * d
+        shoulder, bore = r_out, r_in
     else:
         rc, zc, rg = ro, zo, bearing.outer_conformity * d
-        shoulder = bearing.pitch_radius + 0.3 * d
-        bore = shoulder + 0.6 * d
+        shoulder, bore = r_in, r_out
     # groove arc between the two points where it meets the shoulder radius
     half = math.acos(min(1.0, abs(shoulder - rc) / rg))
-    centre_angle = 0.0 if which == "inner" else math.pi  # arc bulges towards the ball
+    centre_angle = math.pi if which == "inner" else 0.0  # the groove is cut into the ring, away from the ball
     angles = np.linspace(centre_angle - half, centre_angle + half, n_arc)
     arc = [(zc + rg * math.sin(a), rc + rg * math.cos(a)) for a in angles]
     arc.sort()
@@ -90,7 +91,7 @@ def AddBearingGraphics(mbs, handle, *, races: bool = True, cage: bool = True, co
     loads0 = handle.initialLoads
     q_max0 = max(float(np.max(loads0.inner_load)), float(np.max(loads0.outer_load)), 1.0) if loads0 is not None else 100.0
     scale = forceScale if forceScale is not None else d / q_max0
-    contours = {w: _race_contour(b, w) for w in ("inner", "outer")}
+    contours = {w: _race_contour(b, w, con.races[w].mass) for w in ("inner", "outer")}
     nodes = handle.nodeNumbers
     indices = []
     grey = [0.6, 0.6, 0.65, 0.35]

@@ -55,3 +55,30 @@ def test_frames_are_labelled_and_animated(tmp_path):
     assert bar[-1, 0] > 0.9 and bar[-1, 1] < 0.1  # red at the slip scale
     with Image.open(anim) as image:
         assert image.n_frames == 2
+
+
+@pytest.mark.parametrize("mass", [None, 3.0])
+def test_race_graphics_are_the_modelled_ring(mass):
+    """The drawn inner ring (contour's radial extent and width) has the mass of the race body
+    Exudyn integrates: rho pi (r_out^2 - r_in^2) w = m, with the default ring and with a
+    user-given mass."""
+    import exudyn as exu
+
+    from exudyn_bearing import CreateAngularContactBearing, REFERENCE_BEARING, races
+    from exudyn_bearing.graphics import _race_contour
+
+    SC = exu.SystemContainer()
+    mbs = SC.AddSystem()
+    brg = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800, mass=mass), axialForce=1300)
+    body_mass = mbs.GetObject(brg.innerRaceBody)["mass"]
+    contour = np.array(_race_contour(REFERENCE_BEARING, "inner", mass))
+    width = np.ptp(contour[:, 0])
+    r_in, r_out = contour[:, 1].min(), contour[:, 1].max()
+    drawn = REFERENCE_BEARING.race_material.density * np.pi * (r_out ** 2 - r_in ** 2) * width
+    assert drawn == pytest.approx(body_mass, rel=1e-9)
+    if mass is not None:
+        assert body_mass == pytest.approx(mass)
+    # the groove is cut into the ring: its bottom lies f_i D below the groove centre circle
+    (r_centre, _), _ = REFERENCE_BEARING.groove_centres()
+    inside = contour[np.abs(contour[:, 0]) < 0.25 * width]
+    assert inside[:, 1].min() == pytest.approx(r_centre - REFERENCE_BEARING.inner_groove_radius, rel=1e-3)
