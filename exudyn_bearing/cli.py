@@ -33,7 +33,11 @@ def _loads(args) -> int:
         mode="fixed-angle" if args.fixed_angle else "geometric", hold_axial=args.hold_axial,
         hertz_method="exact" if args.exact_hertz else "fit")
     if args.json:
-        json.dump(result.to_dict(), sys.stdout, indent=1)
+        from .records import inputs_record
+
+        data = result.to_dict() | {"inputs": inputs_record(
+            setup.bearing, mode=result.mode, hold_axial=args.hold_axial, exact_hertz=args.exact_hertz)}
+        json.dump(data, sys.stdout, indent=1)
         print()
         return 0
     b = setup.bearing
@@ -112,6 +116,7 @@ def _simulate(args) -> int:
 
 
 def _steady(args) -> int:
+    from .records import units_of
     from .skidmap import hirano_minimum_axial
     from .steady import gyroscopic_minimum_axial, steady_state
 
@@ -119,9 +124,11 @@ def _steady(args) -> int:
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
                          drag=None if args.no_drag else setup.drag, contact_law=_law(args))
     data = state.to_dict()
-    data["hirano_minimum_axial_N"] = hirano_minimum_axial(setup.bearing, args.rpm)
-    data["gyroscopic_minimum_axial_N"] = gyroscopic_minimum_axial(
-        setup.bearing, args.rpm, traction_coefficient=setup.lubricant.limiting_shear_coefficient or 0.047)
+    criteria = {"hirano_minimum_axial": hirano_minimum_axial(setup.bearing, args.rpm),
+                "gyroscopic_minimum_axial": gyroscopic_minimum_axial(
+                    setup.bearing, args.rpm, traction_coefficient=setup.lubricant.limiting_shear_coefficient or 0.047)}
+    data.update(criteria)
+    data["units"].update(units_of(criteria))
     if args.json:
         json.dump(data, sys.stdout, indent=1)
         print()
@@ -137,8 +144,8 @@ def _steady(args) -> int:
     print(f"  inner / outer load                  {state.inner_load:8.2f} / {state.outer_load:.2f} N")
     print(f"  inner / outer contact angle         {state.inner_contact_angle_deg:8.2f} / "
           f"{state.outer_contact_angle_deg:.2f} deg")
-    print(f"  minimum axial load: Hirano {data['hirano_minimum_axial_N']:.0f} N, Jones' gyroscopic criterion "
-          f"{data['gyroscopic_minimum_axial_N']:.0f} N")
+    print(f"  minimum axial load: Hirano {data['hirano_minimum_axial']:.0f} N, Jones' gyroscopic criterion "
+          f"{data['gyroscopic_minimum_axial']:.0f} N")
     print(f"  wall time {state.wall_time_s:.2f} s")
     return 0 if state.converged else 1
 

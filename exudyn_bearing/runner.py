@@ -15,6 +15,7 @@ from .bearing import BallDrag, Bearing
 from .connector import CageModel
 from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .records import inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -324,9 +325,14 @@ class SimulationSummary:
     #: mean power the races put into the balls, W (equals the total loss when settled)
     drive_power_W: float | None = None
 
+    #: what produced it (:func:`exudyn_bearing.records.inputs_record`)
+    inputs: dict = field(default_factory=dict)
+
     def to_dict(self) -> dict:
-        d = {k: v for k, v in asdict(self).items() if k not in ("results", "initial_steady_state")}
-        return d
+        """JSON-ready: the fields (not the results object), ``units`` (the unit of every key)
+        and ``inputs`` last."""
+        d = {k: v for k, v in asdict(self).items() if k not in ("results", "initial_steady_state", "inputs")}
+        return d | {"units": units_of(d), "inputs": self.inputs}
 
 
 def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT, *, axial: float = 1300.0,
@@ -381,4 +387,5 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              # details: what the fields above do not already carry
                              {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
-                             summary["drive_power_W"])
+                             summary["drive_power_W"],
+                             inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, initial_state=initial_state))

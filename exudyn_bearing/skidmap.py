@@ -24,6 +24,7 @@ from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .records import inputs_record, units_of
 from .steady import gyroscopic_minimum_axial, steady_state
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range", "hirano_minimum_axial"]
@@ -129,6 +130,8 @@ class SkidMap:
     refined: list | None = None
     #: names of the files :func:`skid_map` wrote into ``out``
     files: list = field(default_factory=list)
+    #: what produced the map (:func:`exudyn_bearing.records.inputs_record`), set by :func:`skid_map`
+    inputs: dict | None = None
 
     def thresholds(self, level: float = 1.0) -> list[dict]:
         """Per (rpm, radial): the smallest axial load with kinematic cage slip below
@@ -210,8 +213,10 @@ class SkidMap:
         return out
 
     def write(self, out: Path) -> list[str]:
-        """CSV, markdown and thresholds JSON (and a PNG with matplotlib); returns the names
-        of the files written."""
+        """CSV, markdown and thresholds JSON (with its units and inputs; and a PNG with
+        matplotlib); returns the names of the files written. The CSV's columns are the
+        :class:`SkidPoint` names: loads in N, rpm in rev/min, times in s, slips in %,
+        ``peak_ball_slip`` in m/s."""
         out = Path(out)
         out.mkdir(parents=True, exist_ok=True)
         names = [f for f in SkidPoint.__dataclass_fields__]
@@ -222,7 +227,10 @@ class SkidMap:
             for p in rows:
                 writer.writerow([getattr(p, n) for n in names])
         (out / "skid_map.md").write_text(self.markdown() + "\n")
-        (out / "thresholds.json").write_text(json.dumps(self.refined or self.thresholds(), indent=1))
+        thresholds = self.refined or self.thresholds()
+        record = {"thresholds": thresholds, "units": units_of(thresholds[0]) if thresholds else {},
+                  "inputs": self.inputs or {"bearing": repr(self.bearing)}}
+        (out / "thresholds.json").write_text(json.dumps(record, indent=1))
         written = ["skid_map.csv", "skid_map.md", "thresholds.json"]
         if self.plot(out / "skid_map.png"):
             written.append("skid_map.png")
@@ -343,24 +351,11 @@ def _load_done(path: Path) -> dict:
     return done
 
 
-def _inputs_record(bearing, lubricant, drag, contact_law) -> dict:
-    """What a map's points depend on besides (axial, radial, rpm, time): the bearing, the
-    lubricant, the drag, the contact law and the package version."""
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        package = version("exudyn-bearing")
-    except PackageNotFoundError:
-        package = "unknown"
-    return {"bearing": repr(bearing), "lubricant": repr(lubricant), "drag": repr(drag),
-            "contact_law": repr(contact_law), "version": package}
-
-
 def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law) -> None:
     """Record the map's inputs in ``folder/inputs.json``; a resume into a folder whose
     points came from other inputs is refused (it would serve results of another bearing,
     oil or law)."""
-    record = _inputs_record(bearing, lubricant, drag, contact_law)
+    record = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law)
     path = folder / "inputs.json"
     if path.exists():
         try:
@@ -436,7 +431,8 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         _check_inputs(journal.parent, bearing, lubricant, drag, contact_law)
         done = _load_done(journal)
     todo = [p for p in grid if p.key not in done]
-    result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done])
+    result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done],
+                     inputs=inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law))
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 import time as _time
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass, field, replace
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -32,6 +32,7 @@ from .bearing import BallDrag, Bearing
 from .outputs import cage_slip
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
+from .records import inputs_record, units_of
 
 __all__ = ["SteadyState", "steady_state", "gyroscopic_minimum_axial"]
 
@@ -66,11 +67,15 @@ class SteadyState:
     converged: bool
     message: str
     wall_time_s: float
+    #: what produced it (:func:`exudyn_bearing.records.inputs_record`)
+    inputs: dict = field(default_factory=dict, compare=False)
 
     def to_dict(self) -> dict:
+        """JSON-ready: the fields, ``units`` (the unit of every key) and ``inputs``."""
         data = asdict(self)
         data["ball_omega"] = list(self.ball_omega)
-        return data
+        inputs = data.pop("inputs")
+        return data | {"units": units_of(data), "inputs": inputs}
 
 
 class _OutOfBudget(Exception):
@@ -230,15 +235,16 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
         if converged:
             break
     ball.budget = math.inf
+    inputs = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, outer_rpm=outer_rpm)
     if sol is None:  # every start ran out of its budget
         return _result(bearing, ball, x, axial, rpm, w_i, w_o, math.inf, False,
                        f"no steady state found: every start took more than {START_BUDGET} evaluations",
-                       _time.perf_counter() - start)
+                       _time.perf_counter() - start, inputs)
     message = "converged" if converged else (
         f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
         "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")
     return _result(bearing, ball, sol.x, axial, rpm, w_i, w_o, worst, converged, message,
-                   _time.perf_counter() - start)
+                   _time.perf_counter() - start, inputs)
 
 
 def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
@@ -295,7 +301,7 @@ def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
     return x
 
 
-def _result(bearing, ball, x, axial, rpm, w_i, w_o, worst, converged, message, wall):
+def _result(bearing, ball, x, axial, rpm, w_i, w_o, worst, converged, message, wall, inputs):
     w_c, w_b, c, shift = ball.unpack(x)
     kin, f = ball.contacts(x)
     v_ball_p = np.array([0.0, w_c * c[0], 0.0]) + np.cross(w_b, kin.point - c)
@@ -315,7 +321,8 @@ def _result(bearing, ball, x, axial, rpm, w_i, w_o, worst, converged, message, w
         inner_contact_angle_deg=math.degrees(float(kin.contact_angle[0])),
         outer_contact_angle_deg=math.degrees(float(kin.contact_angle[1])),
         inner_max_pressure=float(f.max_pressure[0]), outer_max_pressure=float(f.max_pressure[1]),
-        inner_race_shift=float(shift), ball_orbit_radius=float(c[0]), ball_axial_position=float(c[2]), residual=worst, converged=converged, message=message, wall_time_s=wall)
+        inner_race_shift=float(shift), ball_orbit_radius=float(c[0]), ball_axial_position=float(c[2]), residual=worst, converged=converged, message=message, wall_time_s=wall,
+        inputs=inputs)
 
 
 def gyroscopic_minimum_axial(bearing: Bearing = REFERENCE_BEARING, rpm: float = 1800.0, *,

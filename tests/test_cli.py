@@ -108,6 +108,13 @@ def test_simulate_json_has_every_documented_key_with_finite_values(reference_run
     assert all(isinstance(v, float) and math.isfinite(v) for v in numbers), numbers
     for key in ("steps", "newton_iterations", "jacobian_updates"):
         assert isinstance(data[key], int), key
+    # issue 16 item 7: the unit of every key (nested like the data), and what produced it
+    units = data["units"]
+    assert set(units) == set(data) - {"units", "inputs"}
+    assert (units["axial"], units["rpm"], units["cage_speed"], units["wall_time_s"]) == ("N", "rev/min", "rad/s", "s")
+    assert units["details"]["max_inner_load"] == "N" and units["details"]["attitude_xz_deg"] == "deg"
+    assert set(units["power_loss_W"].values()) == {"W"} and units["solver"]["step"] == "s"
+    assert "balls=16" in data["inputs"]["bearing"] and "viscosity" in data["inputs"]["lubricant"]
 
 
 def test_simulate_json_values_are_physical(reference_run):
@@ -203,6 +210,7 @@ def test_simulate_bearing_file_is_used(reference_run, tmp_path):
     nominal = nominal_cage_speed(1800, d, dm, angle)  # 80.64 rad/s, not the reference's 82.60
     assert data["cage_speed_nominal"] == pytest.approx(nominal, rel=1e-9)
     assert abs(data["cage_speed_nominal"] - reference_run[0]["cage_speed_nominal"]) > 1.0
+    assert "balls=12" in data["inputs"]["bearing"]  # the result records the file's bearing
     assert data["cage_speed"] == pytest.approx(nominal, rel=0.05)
     details = data["details"]
     share = 1300 / z  # 108 N per ball with 12 balls (81 N with the reference's 16)
@@ -285,7 +293,10 @@ def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
                                                                         abs=0.05)
     # thresholds: Hirano 10 Z m r_p w_c^2, and the 1 % crossing bisected with the steady
     # state between the bracketing points, confirmed by dynamic runs at the final bracket
-    (threshold,) = json.loads((out / "thresholds.json").read_text())
+    record = json.loads((out / "thresholds.json").read_text())
+    (threshold,) = record["thresholds"]
+    assert record["units"]["minimum_axial"] == "N" and record["units"]["bracket"] == "N"
+    assert "REFERENCE" in record["inputs"]["bearing"] or "Bearing(" in record["inputs"]["bearing"]
     assert threshold["rpm"] == 1800.0
     w_c = nominal_cage_speed(1800, D_REF, DM_REF, ALPHA_REF)
     assert threshold["hirano_minimum_axial"] == pytest.approx(10 * Z_REF * MASS_REF * DM_REF / 2 * w_c ** 2, rel=1e-6)

@@ -129,8 +129,13 @@ def test_cli_json():
     data = json.loads(out.stdout)
     for key in ("kinematic_cage_slip_percent", "cage_slip_percent", "cage_speed", "attitude_xz_deg",
                 "attitude_yz_deg", "inner_load", "outer_load", "inner_contact_angle_deg", "outer_contact_angle_deg",
-                "converged", "wall_time_s", "hirano_minimum_axial_N", "gyroscopic_minimum_axial_N"):
+                "converged", "wall_time_s", "hirano_minimum_axial", "gyroscopic_minimum_axial"):
         assert key in data
+    # every key has its unit; the inputs name the bearing that produced it
+    assert set(data["units"]) == set(data) - {"units", "inputs"}
+    assert data["units"]["cage_speed"] == "rad/s" and data["units"]["inner_max_pressure"] == "Pa"
+    assert data["units"]["hirano_minimum_axial"] == "N" and data["units"]["attitude_xz_deg"] == "deg"
+    assert "balls=16" in data["inputs"]["bearing"] and data["inputs"]["version"]
     assert data["converged"] is True
     assert 2.0 < data["kinematic_cage_slip_percent"] < 6.0
 

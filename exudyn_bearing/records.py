@@ -1,0 +1,60 @@
+"""What a result file carries besides its numbers: the unit of every name and the inputs
+that produced it (bearing, lubricant, drag, contact law, package version).
+
+Names follow the Python attributes; a suffix states the unit where the name alone does
+not (``_percent``, ``_deg``, ``_s``, ``_W``), and :func:`units_of` gives the unit of every
+key of a result dictionary (SI; ``'-'``: dimensionless or a count/flag/text).
+"""
+from __future__ import annotations
+
+#: unit of a result name without a unit suffix
+UNITS = {
+    "axial": "N", "radial": "N", "rpm": "rev/min", "time": "s", "step": "s", "output_step": "s",
+    "simulated_time": "s",
+    "cage_speed": "rad/s", "cage_speed_nominal": "rad/s", "kinematic_cage_speed": "rad/s",
+    "nominal_cage_speed": "rad/s", "ball_omega": "rad/s",
+    "inner_load": "N", "outer_load": "N", "max_inner_load": "N", "max_outer_load": "N",
+    "max_inner_slip": "m/s", "peak_ball_slip": "m/s",
+    "inner_max_pressure": "Pa", "outer_max_pressure": "Pa",
+    "inner_race_shift": "m", "ball_orbit_radius": "m", "ball_axial_position": "m",
+    "absolute_tolerance": "-", "relative_tolerance": "-", "reference_step": "s",
+    "minimum_axial": "N", "bracket": "N", "dynamic_minimum_axial": "N", "dynamic_slips": "%",
+    "hirano_minimum_axial": "N", "gyroscopic_minimum_axial": "N",
+}
+
+#: unit suffixes of result names
+SUFFIXES = {"_percent": "%", "_deg": "deg", "_s": "s", "_W": "W"}
+
+
+def unit_of(name: str) -> str:
+    """Unit of one result name ('-' if none)."""
+    for suffix, unit in SUFFIXES.items():
+        if name.endswith(suffix):
+            return unit
+    return UNITS.get(name, "-")
+
+
+def units_of(data: dict, parent: str | None = None) -> dict:
+    """Units of the keys of a result dictionary, nested like it; a nested dictionary under a
+    name with a unit suffix (e.g. ``power_loss_W``) takes that unit for all its entries."""
+    out = {}
+    for key, value in data.items():
+        if isinstance(value, dict):
+            inherited = unit_of(key) if any(key.endswith(s) for s in SUFFIXES) else None
+            out[key] = {k: inherited for k in value} if inherited else units_of(value, key)
+        else:
+            out[key] = unit_of(key)
+    return out
+
+
+def inputs_record(bearing, **inputs) -> dict:
+    """What a result depends on besides its load and speed: the bearing and the other inputs
+    given as keywords (lubricant, drag, contact law, settings; their full reprs), and the
+    package version."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        package = version("exudyn-bearing")
+    except PackageNotFoundError:
+        package = "unknown"
+    return {"bearing": repr(bearing)} | {k: repr(v) for k, v in inputs.items()} | {"version": package}
