@@ -22,7 +22,8 @@ from exudyn_bearing.runner import SolverSettings, run_solver
 
 
 def run(axial, sim_time, drag=True, step=None):
-    """One scene: returns the summary over the last third of the run and the run info."""
+    """One scene: returns the summary over the last third of the run, the run info and the
+    scene's inputs (what produced the result)."""
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
     kwargs = {} if drag else {"ballDrag": None}
@@ -30,7 +31,7 @@ def run(axial, sim_time, drag=True, step=None):
                                           axialForce=axial, show=False, **kwargs)
     mbs.Assemble()
     info = run_solver(mbs, [bearing], sim_time, SolverSettings(step=step, output_step=1e-3))
-    return bearing.Results(mbs).summary(), info
+    return bearing.Results(mbs).summary(), info, bearing.Inputs(step=step)
 
 
 def crossing(loads, slips, level=1.0):
@@ -94,10 +95,11 @@ def main():
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.replot:
-        rows = [r for r in json.loads((out / "axial_skidding.json").read_text()) if "failed" not in r]
+        saved = json.loads((out / "axial_skidding.json").read_text())
+        rows = [r for r in (saved["rows"] if isinstance(saved, dict) else saved) if "failed" not in r]
         plot(rows, out, args.compare, args.compare_label)
         return
-    rows, failed = [], []
+    rows, failed, inputs = [], [], None
     times = [float(v) for v in args.time.split(",")] if args.time else None
     if times is not None and len(times) not in (1, len(loads)):
         parser.error("--time takes one value or one per load")
@@ -108,7 +110,7 @@ def main():
             sim_time = 0.05 if args.quick else (5.0 if fa < 300 else 2.0 if fa < 1500 else 0.3)
         start = time.perf_counter()
         try:
-            summary, info = run(fa, sim_time, drag=not args.no_drag, step=args.step)
+            summary, info, inputs = run(fa, sim_time, drag=not args.no_drag, step=args.step)
         except BearingSimulationError as err:  # report the failed point, go on with the others
             print(f"F_a {fa:6.0f} N: FAILED after {time.perf_counter() - start:.0f} s: {err}", flush=True)
             failed.append((fa, str(err)))
@@ -123,7 +125,7 @@ def main():
     print(text)
     (out / "axial_skidding.md").write_text(text + "\n")
     failures = [dict(axial_N=fa, failed=err) for fa, err in failed]
-    (out / "axial_skidding.json").write_text(json.dumps(rows + failures, indent=1))
+    (out / "axial_skidding.json").write_text(json.dumps({"inputs": inputs, "rows": rows + failures}, indent=1))
     plot(rows, out, args.compare, args.compare_label)
 
 

@@ -83,6 +83,7 @@ def main():
                 quasi_static_max_at_cage_speed=float(qs_run.inner_load.max()),
                 cage_eccentricity_max_m=float(res.cage_eccentricity[last].max()),
                 cage_land_force_max_N=float(res.cage_land_force[last].max()))
+    data["inputs"] = bearing.Inputs(axial=2200, radial=2000, rpm=1800)
     (out / "combined_load.json").write_text(json.dumps(data))
     # lightly vs heavily loaded: where the ball's inner load is below/above the mean
     heavy = load > np.mean(load)

@@ -52,7 +52,8 @@ def main():
               f"mean ball slip {slip[k]:.4f} m/s")
     (out / "transient_skidding.json").write_text(json.dumps(dict(
         time=res.time.tolist(), inner_rpm=(res.inner_speed * 30 / np.pi).tolist(),
-        kinematic_cage_slip_percent=res.kinematic_cage_slip_percent.tolist(), mean_ball_slip=slip.tolist())))
+        kinematic_cage_slip_percent=res.kinematic_cage_slip_percent.tolist(), mean_ball_slip=slip.tolist(),
+        inputs=bearing.Inputs(time=args.time))))
     try:
         import matplotlib
         matplotlib.use("Agg")

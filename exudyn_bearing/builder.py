@@ -22,6 +22,7 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
+from .records import inputs_record
 from .connector import BearingConnector, CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
@@ -54,6 +55,14 @@ class BearingHandle:
     initialLoads: object = field(repr=False, default=None)
     #: the :class:`~exudyn_bearing.steady.SteadyState` the run starts from, or None (pure-rolling start)
     initialSteadyState: object = field(repr=False, default=None)
+
+    def Inputs(self, **settings) -> dict:
+        """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,
+        races, package version, and ``settings`` given here), for a result file
+        (:func:`exudyn_bearing.records.inputs_record`)."""
+        con = self.connector
+        return inputs_record(self.bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
+                             cage=con.cage, races=con.races, **settings)
 
     def States(self, mbs):
         """Recorded (t, q, q_t) of the bearing's nodes: absolute coordinates, shape
