@@ -26,7 +26,9 @@ from .records import inputs_record
 from .connector import BearingConnector, CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
-from .races import Driven, Fixed, Race
+from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_state, race_adapter,
+                    ring_inertia)
+from .start import choose_inner_control, jones_axis_start, raceway_control, steady_start
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
@@ -136,99 +138,6 @@ class BearingHandle:
         return compute_results(self, t[::stride], q[::stride], q_t[::stride])
 
 
-def _ring_inertia(mass, r_in, r_out, width):
-    i_axial = 0.5 * mass * (r_in ** 2 + r_out ** 2)
-    i_radial = 0.25 * mass * (r_in ** 2 + r_out ** 2) + mass * width ** 2 / 12
-    return i_radial, i_axial
-
-
-#: node types a race may sit on (races.OnBody) -> (rotation matrix, local G matrix) of
-#: their rotation coordinates; Lie-group nodes are the connector's own, others get an adapter
-_NODE_KINEMATICS = {
-    "RigidBodyRotVecLG": ("RotationVector2RotationMatrix", None),
-    "RigidBodyEP": ("EulerParameters2RotationMatrix", "EulerParameters2GLocal"),
-    "RigidBodyRxyz": ("RotXYZ2RotationMatrix", "RotXYZ2GLocal"),
-}
-
-#: an adapter race body's mass and inertia as a fraction of the default ring's (it only
-#: carries the race frame; the user's body carries the mass)
-ADAPTER_MASS_FRACTION = 1e-3
-
-
-def _node_state(mbs, node):
-    """(position m, rotation matrix, velocity m/s, GLOBAL angular velocity rad/s) of a rigid-body
-    node's initial state (reference + initial coordinates), for the node types of
-    :data:`_NODE_KINEMATICS`."""
-    import exudyn.rigidBodyUtilities as rbu
-
-    kind = mbs.GetNode(node)["nodeType"]
-    ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
-    init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
-    init_t = np.asarray(mbs.GetNodeParameter(node, "initialVelocities"), dtype=float)
-    to_matrix, to_g = _NODE_KINEMATICS[kind]
-    params = ref[3:] + init[3:]
-    rot = np.asarray(getattr(rbu, to_matrix)(params), dtype=float)
-    if to_g is None:  # Lie-group nodes: velocity coordinates are the local angular velocity
-        w_local = init_t[3:]
-    else:
-        w_local = np.asarray(getattr(rbu, to_g)(params), dtype=float) @ init_t[3:]
-    return ref[:3] + init[:3], rot, init_t[:3], rot @ w_local
-
-
-def _race_adapter(mbs, bearing, race, which, node_type):
-    """A race frame on a body whose node is not a rotation-vector Lie-group node: a light
-    race body with such a node (:data:`ADAPTER_MASS_FRACTION` of the default ring), joined
-    rigidly to the user's body at the race position by an ``ObjectJointGeneric`` (all six
-    axes); returns its (body, node). The joint passes the bearing's forces to the user's body
-    (Exudyn's implicit solvers; its explicit ones refuse the constraint, as they refuse
-    Euler-parameter nodes)."""
-    from exudyn.utilities import MarkerBodyRigid, ObjectJointGeneric, RigidBodyInertia
-
-    pos_node, rot_node, v_node, w_node = _node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
-    local_p = np.asarray(race.local_position, dtype=float)
-    local_r = np.asarray(race.local_rotation, dtype=float)
-    mass, (i_r, i_a) = _default_race_body(bearing, race, which)
-    f = ADAPTER_MASS_FRACTION
-    d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=f * mass, inertiaTensor=np.diag([f * i_r, f * i_r, f * i_a])),
-                            referencePosition=pos_node + rot_node @ local_p, referenceRotationMatrix=rot_node @ local_r,
-                            initialVelocity=v_node + np.cross(w_node, rot_node @ local_p),
-                            initialAngularVelocity=w_node, nodeType=node_type, returnDict=True)
-    import exudyn as exu
-
-    # marker 0 carries the race frame on the user's body (Exudyn 1.13: rotation in its localHT)
-    m_user = mbs.AddMarker(MarkerBodyRigid(bodyNumber=race.body,
-                                           localHT=exu.HT(rotation=local_r.tolist(), translation=local_p.tolist())))
-    m_race = mbs.AddMarker(MarkerBodyRigid(bodyNumber=d["bodyNumber"], localPosition=[0.0, 0.0, 0.0]))
-    mbs.AddObject(ObjectJointGeneric(markerNumbers=[m_user, m_race], constrainedAxes=[1] * 6))
-    return d["bodyNumber"], d["nodeNumber"]
-
-
-def race_ring_section(bearing: Bearing, which: str, mass: float | None = None):
-    """(bore radius, outside radius, width) of the race ring the model uses, m: a steel ring
-    1.5 D wide next to the groove (shoulder 0.3 D from the pitch circle), 0.6 D thick,
-    or as thick as ``mass`` (kg) makes it at that width. Both the default mass and inertia
-    and the renderer's race graphics come from it, so the drawn ring is the modelled one."""
-    d = bearing.ball_diameter
-    width = 1.5 * d
-    area = None if mass is None else mass / (bearing.race_material.density * math.pi * width)
-    if which == "inner":
-        r_out = bearing.pitch_radius - 0.3 * d
-        # a ring heavier than a solid disc of this width is drawn as that disc
-        r_in = r_out - 0.6 * d if area is None else math.sqrt(max(r_out ** 2 - area, 0.0))
-    else:
-        r_in = bearing.pitch_radius + 0.3 * d
-        r_out = r_in + 0.6 * d if area is None else math.sqrt(r_in ** 2 + area)
-    return r_in, r_out, width
-
-
-def _default_race_body(bearing: Bearing, race: Race, which: str):
-    """Mass and inertia of the race ring (:func:`race_ring_section`), unless the Race gives them."""
-    r_in, r_out, width = race_ring_section(bearing, which, race.mass)
-    mass = race.mass or bearing.race_material.density * math.pi * (r_out ** 2 - r_in ** 2) * width
-    inertia = race.inertia or _ring_inertia(mass, r_in, r_out, width)
-    return mass, inertia
-
-
 def _check_frame(position, rotation):
     position = np.asarray(position, dtype=float)
     rotation = np.asarray(rotation, dtype=float)
@@ -291,9 +200,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     initialControl : {'auto', 'inner', 'outer'}
         Pure-rolling start: 'inner'/'outer' is raceway control (Jones) by that contact —
         each ball's absolute spin axis solved for zero spin there and zero rolling slip at
-        both contacts (:func:`raceway_control`); 'auto' takes Jones' angle of the contact
+        both contacts (:func:`exudyn_bearing.start.raceway_control`); 'auto' takes Jones' angle of the contact
         with the larger Newtonian spin resistance as the absolute axis (see
-        ``_jones_axis_start``: measured to start combined loads with the fewest step cuts).
+        ``start.jones_axis_start``: measured to start combined loads with the fewest step cuts).
     initialState : {'auto', 'steady', 'rolling'}
         'steady': every ball, the cage and the inner race start in the steady rolling state
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
@@ -331,9 +240,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             raise ValueError(f"{name} must be a races.Race, got {race!r}")
         if race.kind == "body":  # checked before anything is added to mbs
             node_type = mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"]
-            if node_type not in _NODE_KINEMATICS:
+            if node_type not in NODE_KINEMATICS:
                 raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing takes rigid-body "
-                                 "nodes of type " + ", ".join(_NODE_KINEMATICS) + ": create that body with "
+                                 "nodes of type " + ", ".join(NODE_KINEMATICS) + ": create that body with "
                                  "nodeType=exu.NodeType.RotationEulerParameters (Exudyn's default) or "
                                  "RotationRotationVector")
     axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
@@ -350,7 +259,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     relative = np.zeros(5)
     for name, race, sign in (("inner", inner, 1.0), ("outer", outer, -1.0)):
         if race.kind == "body":
-            pos_node, rot_node, _, w_node = _node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
+            pos_node, rot_node, _, w_node = node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
             race_origin = pos_node + rot_node @ np.asarray(race.local_position)
             relative[:3] += sign * frame.T @ (race_origin - origin)
             speed[name] = float(axis @ w_node)
@@ -386,9 +295,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         a_i, a_o = loads.inner_contact_angle, loads.outer_contact_angle
         p_in = c_loc - bearing.ball_radius * (np.cos(a_i)[:, None] * e_r + np.sin(a_i)[:, None] * e_z)
         p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
-        inner_controls = _inner_controls(bearing, lubricant, loads, w_i, w_o, initialControl)
+        inner_controls = choose_inner_control(bearing, lubricant, loads, w_i, w_o, initialControl)
         if initialControl == "auto":
-            w_c, omega_loc = _jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls)
+            w_c, omega_loc = jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls)
         else:
             w_c, omega_loc = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls, inner_origin=relative[:3])
         orbit = np.abs(w_c)
@@ -396,7 +305,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             break
         # one speed for a pure axial load (all balls alike), each ball's own otherwise
         cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
-    steady = _steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
+    steady = steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
                            sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
                            contactLaw=contactLaw, ballDrag=ballDrag, cage=cage)
     if steady is not None:
@@ -429,7 +338,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     if cage.kind == "rigid":
         width, thick = bearing.ball_diameter, 0.3 * bearing.ball_diameter
         mass = cage.mass_for(bearing)
-        i_r, i_a = _ring_inertia(mass, bearing.pitch_radius - thick / 2, bearing.pitch_radius + thick / 2, width)
+        i_r, i_a = ring_inertia(mass, bearing.pitch_radius - thick / 2, bearing.pitch_radius + thick / 2, width)
         d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
                                 referencePosition=origin, referenceRotationMatrix=frame,
                                 initialAngularVelocity=float(np.mean(w_c)) * axis, nodeType=node_type,
@@ -443,14 +352,14 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         if race.kind == "fixed":
             continue
         if race.kind == "body" and mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"] != "RigidBodyRotVecLG":
-            body, node = _race_adapter(mbs, bearing, race, name, node_type)
+            body, node = race_adapter(mbs, bearing, race, name, node_type)
             race_frames[name] = (np.zeros(3), np.eye(3))
         elif race.kind == "body":
             body = race.body
             node = mbs.GetObject(body)["nodeNumber"]
             race_frames[name] = (np.asarray(race.local_position, dtype=float), np.asarray(race.local_rotation, dtype=float))
         else:
-            mass, (i_r, i_a) = _default_race_body(bearing, race, name)
+            mass, (i_r, i_a) = default_race_body(bearing, race, name)
             d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
                                     referencePosition=origin + frame @ shift, referenceRotationMatrix=frame,
                                     initialAngularVelocity=race.speed(0.0) * axis, nodeType=node_type,
@@ -500,143 +409,3 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
                          connector, nodes, loads, steady)
-
-
-def _steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
-                  contactLaw, ballDrag, cage=None):
-    """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
-    pure-rolling start ('rolling', or 'auto' where the steady state does not apply). Loads
-    given as functions of time start from their values at t = 0, as the quasi-static start."""
-    if initial_state not in ("auto", "steady", "rolling"):
-        raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
-    if initial_state == "rolling":
-        return None
-    why = None
-    if radial != 0 or axial <= 0:
-        why = "it needs an axial force alone (radial = 0, axial > 0)"
-    elif inner.kind not in ("driven", "free") or displaced:
-        why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
-    elif rpm_i == sense * rpm_o:
-        why = "the races turn at the same speed"
-    if why is None:
-        from .steady import steady_state
-
-        state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
-                             drag=ballDrag, contact_law=contactLaw, cage=cage)
-        if state.converged:
-            return state
-        why = state.message
-    if initial_state == "steady":
-        raise ValueError(f"initialState: no steady start here, {why}; use initialState='rolling'")
-    return None
-
-
-def _spin_resistance(bearing, lubricant, load, angle, race, speed):
-    """Newtonian spin resistance (1/h) of the integral of eta (x² + y²) over the Hertz
-    ellipse, N m s (MODEL.md §5–§6): the spin moment per unit spin at small spin."""
-    from contact import film
-
-    r_x, _ = bearing.curvature_radii(angle, race)
-    con = bearing.hertz(angle, race)
-    a, b = con.semi_axes(load)
-    lam = lubricant.pressure_viscosity * con.max_pressure(load)
-    h = np.maximum(film.central_film_thickness(speed, load, r_x, con.ellipticity, bearing.effective_modulus,
-                                               lubricant), 1e-9)
-    # polar: x = b R cos t, y = a R sin t; integral of R^3 exp(lam sqrt(1 - R²)) dR by Gauss
-    nodes, weights = np.polynomial.legendre.leggauss(24)
-    r = 0.5 * (nodes + 1.0)
-    radial = 0.5 * np.sum(weights * r ** 3 * np.exp(np.multiply.outer(lam, np.sqrt(1.0 - r ** 2))), axis=-1)
-    return lubricant.viscosity * np.pi * a * b * (a ** 2 + b ** 2) * radial / h
-
-
-def _inner_controls(bearing, lubricant, loads, w_i, w_o, control="auto"):
-    """Per ball: True where the inner contact controls the spin (raceway control, Jones):
-    'auto' takes the contact with the larger Newtonian spin resistance, which under EHD
-    traction is usually the smaller, higher-pressure inner contact."""
-    if control != "auto":
-        return np.full(bearing.balls, control == "inner")
-    gamma = bearing.ball_diameter / bearing.pitch_diameter
-    speed = max(abs(w_i - w_o), 1e-3) * bearing.pitch_radius * (1 - gamma ** 2) / 2  # entrainment, m/s
-    q_i, q_o = np.maximum(loads.inner_load, 1e-9), np.maximum(loads.outer_load, 1e-9)
-    m_i = _spin_resistance(bearing, lubricant, q_i, loads.inner_contact_angle, "inner", speed)
-    m_o = _spin_resistance(bearing, lubricant, q_o, loads.outer_contact_angle, "outer", speed)
-    return m_i > m_o
-
-
-def _jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls):
-    """The 'auto' start: Jones' raceway-control angle, tan b = sin a / (cos a -/+ D/d_m) —
-    the spin axis relative to the cage — taken as the absolute axis, with zero rolling slip
-    at both contacts. Not a raceway-control state (both contacts spin a little), but it lies
-    between the inner- and outer-controlled absolute axes and starts the combined-load
-    case with the fewest step cuts (0.02 s, reference bearing, 2.2 kN + 2 kN radial: 201
-    steps for 200 and 52 Jacobians; exact inner / outer control 494 / 222 steps)."""
-    from contact.kinematics import rolling_cage_speed
-
-    gamma = bearing.ball_diameter / bearing.pitch_diameter
-    beta = np.where(inner_controls, np.arctan2(np.sin(a_i), np.cos(a_i) - gamma),
-                    np.arctan2(np.sin(a_o), np.cos(a_o) + gamma))
-    axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * np.array([0.0, 0.0, 1.0])
-    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True)
-    return w_c, spin[:, None] * axis
-
-
-def raceway_control(centre, inner_point, outer_point, inner_speed, outer_speed, inner_controls, cage_speed=None,
-                    inner_origin=(0.0, 0.0, 0.0)):
-    """Pure rolling with raceway control (MODEL.md §7): per ball the orbital speed w_c and the
-    absolute angular velocity w_b (in the ball's meridional plane) with zero rolling slip at
-    both contact centres and zero spin at the controlling contact, (w_race e_z - w_b) . n = 0.
-
-    All three conditions are linear in (w_c, w_b . e_r, w_b . e_z): with d = p - c and the
-    race surface speed along the rolling direction e_psi,
-    w_c r_c + (w_b x d) . e_psi = w_race ((p - o) . e_r), o the race centre, and
-    (w_race e_z - w_b) . n = 0 with
-    n = d / |d|. (Jones' tan(beta) formulas give the same axis relative to the cage; used
-    as the absolute axis they leave spin at the controlling contact.)
-
-    Parameters
-    ----------
-    centre, inner_point, outer_point : ndarray (Z, 3)
-        Ball centres and contact centres, bearing frame (z the axis), m.
-    inner_speed, outer_speed : float
-        Race speeds about +z, rad/s.
-    inner_controls : ndarray of bool (Z,)
-    cage_speed : float, optional
-        Impose this orbital speed on every ball (rad/s): the rolling condition of the
-        non-controlling contact is then dropped.
-    inner_origin : (3,), optional
-        Centre of the (displaced) inner race, bearing frame, m.
-
-    Returns
-    -------
-    w_c : ndarray (Z,), rad/s
-    omega : ndarray (Z, 3), rad/s, bearing frame
-    """
-    c = np.asarray(centre, dtype=float)
-    r_c = np.hypot(c[:, 0], c[:, 1])
-    e_r = np.stack([c[:, 0] / r_c, c[:, 1] / r_c, np.zeros(len(c))], axis=1)
-    e_z = np.array([0.0, 0.0, 1.0])
-    w_c = np.empty(len(c))
-    omega = np.empty((len(c), 3))
-    for j in range(len(c)):
-        rows, rhs = [], []
-        normals = {}
-        for name, p, w_race, o in (("inner", inner_point[j], inner_speed, np.asarray(inner_origin, dtype=float)),
-                                   ("outer", outer_point[j], outer_speed, np.zeros(3))):
-            d = p - c[j]
-            dr, dz = d @ e_r[j], d[2]
-            # (w_b x d) . e_psi with w_b = x e_r + y e_z and d = dr e_r + dz e_z: y dr - x dz
-            rows.append([r_c[j], -dz, dr])
-            rhs.append(w_race * ((p - o) @ e_r[j]))
-            normals[name] = (np.array([dr, dz]) / np.hypot(dr, dz), w_race)
-        (n_r, n_z), w_race = normals["inner" if inner_controls[j] else "outer"]
-        rows.append([0.0, n_r, n_z])
-        rhs.append(w_race * n_z)
-        if cage_speed is None:
-            w_c[j], x, y = np.linalg.solve(np.array(rows), np.array(rhs))
-        else:
-            keep = [0 if inner_controls[j] else 1, 2]
-            a, b = np.array(rows)[keep], np.array(rhs)[keep]
-            w_c[j] = cage_speed
-            x, y = np.linalg.solve(a[:, 1:], b - a[:, 0] * cage_speed)
-        omega[j] = x * e_r[j] + y * e_z
-    return w_c, omega

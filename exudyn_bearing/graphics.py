@@ -42,8 +42,8 @@ def _load_color(ratio):
 def _race_contour(bearing, which, mass=None, n_arc=24):
     """(axial, radial) contour of a race cross-section with its groove, m, in the race
     frame (groove centre at the bearing-frame position of MODEL.md §2): the modelled ring
-    of :func:`exudyn_bearing.builder.race_ring_section` (``mass``: the race body's, kg)."""
-    from .builder import race_ring_section
+    of :func:`exudyn_bearing.races.race_ring_section` (``mass``: the race body's, kg)."""
+    from .races import race_ring_section
 
     (ri, zi), (ro, zo) = bearing.groove_centres()
     d = bearing.ball_diameter

@@ -13,10 +13,13 @@ Use the factory functions:
 ``Free(rpm=0)``
     A new, unconstrained rigid body (initial speed ``rpm``).
 ``OnBody(bodyNumber, localPosition, localRotation)``
-    An existing Exudyn rigid body (shaft, housing, gear) with a ``NodeRigidBodyRotVecLG``
-    node; the race frame sits at ``localPosition`` with ``localRotation`` (its third column
-    is the race axis) in the body frame. Contact forces go to that body with their true
-    lever arms.
+    An existing Exudyn rigid body (shaft, housing, gear) with any rigid-body node type; the
+    race frame sits at ``localPosition`` with ``localRotation`` (its third column is the
+    race axis) in the body frame. Contact forces go to that body with their true lever arms.
+
+The builder turns them into Exudyn bodies with the functions below the factories: the
+modelled ring (:func:`race_ring_section`, its mass and inertia) and, for a body whose node
+is not a rotation-vector Lie-group node, a light adapter body joined to it.
 """
 from __future__ import annotations
 
@@ -26,7 +29,9 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["Race", "Fixed", "Driven", "Free", "OnBody"]
+from .bearing import Bearing
+
+__all__ = ["Race", "Fixed", "Driven", "Free", "OnBody", "race_ring_section"]
 
 
 @dataclass(frozen=True)
@@ -88,6 +93,101 @@ def OnBody(bodyNumber: int, localPosition=(0.0, 0.0, 0.0), localRotation=np.eye(
     """Race fixed to an existing Exudyn rigid body: any rigid-body node of Exudyn's
     ``CreateRigidBody`` (Euler parameters, its default; Tait–Bryan angles; rotation vector).
     A rotation-vector Lie-group node carries the race frame itself; others get a light race
-    body joined rigidly to them (``builder._race_adapter``; implicit solvers)."""
+    body joined rigidly to them (:func:`race_adapter`; implicit solvers)."""
     return Race("body", body=int(bodyNumber), local_position=tuple(float(v) for v in localPosition),
                 local_rotation=tuple(tuple(float(v) for v in row) for row in np.asarray(localRotation)))
+
+
+# ---- race bodies: the modelled ring, and adapters for the user's node types ------------
+def ring_inertia(mass, r_in, r_out, width):
+    """(I_radial, I_axial) of a ring of ``mass`` kg, radii and width in m, kg m²."""
+    i_axial = 0.5 * mass * (r_in ** 2 + r_out ** 2)
+    i_radial = 0.25 * mass * (r_in ** 2 + r_out ** 2) + mass * width ** 2 / 12
+    return i_radial, i_axial
+
+
+#: node types a race may sit on (races.OnBody) -> (rotation matrix, local G matrix) of
+#: their rotation coordinates; Lie-group nodes are the connector's own, others get an adapter
+NODE_KINEMATICS = {
+    "RigidBodyRotVecLG": ("RotationVector2RotationMatrix", None),
+    "RigidBodyEP": ("EulerParameters2RotationMatrix", "EulerParameters2GLocal"),
+    "RigidBodyRxyz": ("RotXYZ2RotationMatrix", "RotXYZ2GLocal"),
+}
+
+#: an adapter race body's mass and inertia as a fraction of the default ring's (it only
+#: carries the race frame; the user's body carries the mass)
+ADAPTER_MASS_FRACTION = 1e-3
+
+
+def node_state(mbs, node):
+    """(position m, rotation matrix, velocity m/s, GLOBAL angular velocity rad/s) of a rigid-body
+    node's initial state (reference + initial coordinates), for the node types of
+    :data:`NODE_KINEMATICS`."""
+    import exudyn.rigidBodyUtilities as rbu
+
+    kind = mbs.GetNode(node)["nodeType"]
+    ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
+    init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float)
+    init_t = np.asarray(mbs.GetNodeParameter(node, "initialVelocities"), dtype=float)
+    to_matrix, to_g = NODE_KINEMATICS[kind]
+    params = ref[3:] + init[3:]
+    rot = np.asarray(getattr(rbu, to_matrix)(params), dtype=float)
+    if to_g is None:  # Lie-group nodes: velocity coordinates are the local angular velocity
+        w_local = init_t[3:]
+    else:
+        w_local = np.asarray(getattr(rbu, to_g)(params), dtype=float) @ init_t[3:]
+    return ref[:3] + init[:3], rot, init_t[:3], rot @ w_local
+
+
+def race_adapter(mbs, bearing, race, which, node_type):
+    """A race frame on a body whose node is not a rotation-vector Lie-group node: a light
+    race body with such a node (:data:`ADAPTER_MASS_FRACTION` of the default ring), joined
+    rigidly to the user's body at the race position by an ``ObjectJointGeneric`` (all six
+    axes); returns its (body, node). The joint passes the bearing's forces to the user's body
+    (Exudyn's implicit solvers; its explicit ones refuse the constraint, as they refuse
+    Euler-parameter nodes)."""
+    from exudyn.utilities import MarkerBodyRigid, ObjectJointGeneric, RigidBodyInertia
+
+    pos_node, rot_node, v_node, w_node = node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
+    local_p = np.asarray(race.local_position, dtype=float)
+    local_r = np.asarray(race.local_rotation, dtype=float)
+    mass, (i_r, i_a) = default_race_body(bearing, race, which)
+    f = ADAPTER_MASS_FRACTION
+    d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=f * mass, inertiaTensor=np.diag([f * i_r, f * i_r, f * i_a])),
+                            referencePosition=pos_node + rot_node @ local_p, referenceRotationMatrix=rot_node @ local_r,
+                            initialVelocity=v_node + np.cross(w_node, rot_node @ local_p),
+                            initialAngularVelocity=w_node, nodeType=node_type, returnDict=True)
+    import exudyn as exu
+
+    # marker 0 carries the race frame on the user's body (Exudyn 1.13: rotation in its localHT)
+    m_user = mbs.AddMarker(MarkerBodyRigid(bodyNumber=race.body,
+                                           localHT=exu.HT(rotation=local_r.tolist(), translation=local_p.tolist())))
+    m_race = mbs.AddMarker(MarkerBodyRigid(bodyNumber=d["bodyNumber"], localPosition=[0.0, 0.0, 0.0]))
+    mbs.AddObject(ObjectJointGeneric(markerNumbers=[m_user, m_race], constrainedAxes=[1] * 6))
+    return d["bodyNumber"], d["nodeNumber"]
+
+
+def race_ring_section(bearing: Bearing, which: str, mass: float | None = None):
+    """(bore radius, outside radius, width) of the race ring the model uses, m: a steel ring
+    1.5 D wide next to the groove (shoulder 0.3 D from the pitch circle), 0.6 D thick,
+    or as thick as ``mass`` (kg) makes it at that width. Both the default mass and inertia
+    and the renderer's race graphics come from it, so the drawn ring is the modelled one."""
+    d = bearing.ball_diameter
+    width = 1.5 * d
+    area = None if mass is None else mass / (bearing.race_material.density * math.pi * width)
+    if which == "inner":
+        r_out = bearing.pitch_radius - 0.3 * d
+        # a ring heavier than a solid disc of this width is drawn as that disc
+        r_in = r_out - 0.6 * d if area is None else math.sqrt(max(r_out ** 2 - area, 0.0))
+    else:
+        r_in = bearing.pitch_radius + 0.3 * d
+        r_out = r_in + 0.6 * d if area is None else math.sqrt(r_in ** 2 + area)
+    return r_in, r_out, width
+
+
+def default_race_body(bearing: Bearing, race: Race, which: str):
+    """Mass and inertia of the race ring (:func:`race_ring_section`), unless the Race gives them."""
+    r_in, r_out, width = race_ring_section(bearing, which, race.mass)
+    mass = race.mass or bearing.race_material.density * math.pi * (r_out ** 2 - r_in ** 2) * width
+    inertia = race.inertia or ring_inertia(mass, r_in, r_out, width)
+    return mass, inertia
