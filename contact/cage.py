@@ -1,8 +1,9 @@
 """Ball–cage interaction and ball drag (MODEL.md §1, §8; paper P9, P10), vectorized.
 
-Forces act at the ball centres (a pocket pushes the ball along its circumferential
-direction through the centre), so they put no moment on the balls; the cage receives
-the opposite force at the same point.
+Pocket normal forces act at the ball centres (a pocket pushes the ball along its
+circumferential direction through the centre), so they put no moment on the balls; the
+cage receives the opposite force at the same point. Pocket friction (MODEL.md §11d) acts at
+the contact point on the ball's surface, so it does.
 """
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 
 from .kinematics import cross
 
-__all__ = ["pocket_forces", "spring_chain_forces", "radial_offset", "land_forces", "drag_forces"]
+__all__ = ["pocket_forces", "pocket_friction", "spring_chain_forces", "radial_offset", "land_forces", "drag_forces"]
 
 
 def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_velocity, cage_omega,
@@ -54,6 +55,53 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
         pen = np.abs(s) - gap
         magnitude = np.where(pen > 0, -sign * np.maximum(stiffness * pen + damping * s_dot * sign, 0.0), 0.0)
     return magnitude[..., None] * e
+
+
+def pocket_friction(pocket_force, ball_centre, ball_velocity, ball_omega, cage_origin, cage_velocity, cage_omega,
+                    ball_radius, coefficient, slip_scale):
+    """Sliding friction at the ball–pocket contacts (MODEL.md §11d), regularized Coulomb.
+
+    The pocket pushes the ball with N = |F| along n = F/N (``pocket_force`` F from
+    :func:`pocket_forces`); the contact lies on the ball at p = c - r n. The ball surface
+    slides on the pocket there at v_rel = v_b + w_b x (p - c) - (v_cage + w_cage x (p - o));
+    its tangential part v_t = v_rel - (v_rel . n) n meets the friction force
+
+        F_f = -mu N v_t / sqrt(|v_t|² + v_s²)
+
+    (Coulomb with mu = ``coefficient`` beyond the slip scale v_s, viscous below it, so the
+    force is smooth for Newton and dissipates at any slip). The cage takes -F_f at p.
+
+    Parameters
+    ----------
+    pocket_force, ball_centre, ball_velocity, ball_omega : ndarray, (..., n, 3)
+        N, m, m/s, rad/s (global frame).
+    cage_origin, cage_velocity, cage_omega : ndarray, (..., 3)
+    ball_radius, coefficient, slip_scale : float
+        m, -, m/s.
+
+    Returns
+    -------
+    force : ndarray (..., n, 3)
+        F_f on the balls, N.
+    point : ndarray (..., n, 3)
+        Contact points p, m.
+    loss : ndarray (..., n)
+        Dissipated power -F_f . v_t = mu N |v_t|² / sqrt(|v_t|² + v_s²), W.
+    """
+    f = np.asarray(pocket_force, dtype=float)
+    normal_load = np.linalg.norm(f, axis=-1)
+    n = f / np.maximum(normal_load, 1e-300)[..., None]
+    arm = -ball_radius * n  # p - c
+    point = np.asarray(ball_centre, dtype=float) + arm
+    origin = np.asarray(cage_origin, dtype=float)[..., None, :]
+    v_ball = np.asarray(ball_velocity, dtype=float) + cross(np.asarray(ball_omega, dtype=float), arm)
+    v_cage = np.asarray(cage_velocity, dtype=float)[..., None, :] + cross(
+        np.asarray(cage_omega, dtype=float)[..., None, :], point - origin)
+    v_rel = v_ball - v_cage
+    v_t = v_rel - np.einsum("...j,...j->...", v_rel, n)[..., None] * n
+    speed2 = np.einsum("...j,...j->...", v_t, v_t)
+    scale = coefficient * normal_load / np.sqrt(speed2 + slip_scale ** 2)
+    return -scale[..., None] * v_t, point, scale * speed2
 
 
 def spring_chain_forces(ball_centre, axis, pitch_radius, stiffness, origin=(0.0, 0.0, 0.0)):

@@ -65,6 +65,12 @@ class CageModel:
     land_radius : float or None
         Radius R of the guiding land, m; None: r_p + D/2 (outer guidance) or r_p - D/2 (inner),
         the land at the balls' edge.
+    pocket_friction : float
+        Sliding friction coefficient mu at the ball–pocket contacts (rigid cage; MODEL.md
+        §11d: regularized Coulomb at the contact point, so it resists the balls' spin and
+        drags the cage). 0 (default): frictionless pockets, as the paper.
+    pocket_slip_scale : float
+        Slip speed v_s, m/s, below which the pocket friction is viscous (mu N v / v_s).
     """
 
     kind: str = "rigid"
@@ -78,13 +84,15 @@ class CageModel:
     guide_damping: float | None = None
     land_width: float = 0.0
     land_radius: float | None = None
+    pocket_friction: float = 0.0
+    pocket_slip_scale: float = 0.01
 
     def __post_init__(self) -> None:
         if self.kind not in ("rigid", "spring-chain", "none"):
             raise ValueError(f"kind must be 'rigid', 'spring-chain' or 'none', got {self.kind!r}")
         if self.guidance not in ("outer", "inner", "balls"):
             raise ValueError(f"guidance must be 'outer', 'inner' or 'balls', got {self.guidance!r}")
-        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness", "land_width"):
+        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness", "land_width", "pocket_friction"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value >= 0):
                 raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
@@ -99,6 +107,10 @@ class CageModel:
         if self.land_width > 0 and (self.kind != "rigid" or self.guidance == "balls"):
             raise ValueError("land_width: land friction needs a rigid cage guided by a race land "
                              "(kind='rigid', guidance='inner' or 'outer')")
+        if not (np.isfinite(self.pocket_slip_scale) and self.pocket_slip_scale > 0):
+            raise ValueError(f"pocket_slip_scale must be positive, got {self.pocket_slip_scale!r}")
+        if self.pocket_friction > 0 and self.kind != "rigid":
+            raise ValueError("pocket_friction: pocket friction needs a rigid cage (kind='rigid')")
         if self.land_width > 0 and self.guide_clearance <= 0:
             raise ValueError("land_width: the land friction needs a guide_clearance > 0 (its oil film)")
 
@@ -150,6 +162,8 @@ class ConnectorState:
     cage_land_force: np.ndarray = None  #: guiding land on the cage, (3,), N (None: not guided)
     cage_position: np.ndarray = None  #: rigid cage centre, (3,), m (None: no rigid cage)
     cage_velocity: np.ndarray = None  #: its velocity, (3,), m/s
+    pocket_friction_force: np.ndarray = None  #: pocket friction on each ball, (Z, 3), N (None: off)
+    pocket_friction_loss: float = 0.0  #: power the pocket friction dissipates, W
 
 
 def _take(record, part):
@@ -309,7 +323,7 @@ class BearingConnector:
         reference) and velocities q_t: the force user function. One compiled call when the
         compiled path applies; a state it cannot take (not finite, a ball out of its groove)
         goes through :meth:`forces`, which records why and returns NaN."""
-        if self._compiled is not None:
+        if self._compiled is not None and self.cage.pocket_friction <= 0:  # the one-call kernel has no pocket friction
             status, out = self._compiled.single(t, q, q_t, self.reference)
             if status == 0:
                 return out.copy()
@@ -342,7 +356,7 @@ class BearingConnector:
         out = out + react.sum(axis=0)
         if not details:
             return out.ravel()
-        kin_all, frc_all, cage_force, drag_force, race_omega = parts
+        kin_all, frc_all, cage_force, drag_force, race_omega, friction = parts
         z = self.z
         halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
         cage_slot = self.layout["cage"]
@@ -352,7 +366,9 @@ class BearingConnector:
                               race_omega["inner"][0], race_omega["outer"][0],
                               self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega),
                               cage_position=pos[cage_slot] if self.cage.kind == "rigid" else None,
-                              cage_velocity=vel[cage_slot] if self.cage.kind == "rigid" else None)
+                              cage_velocity=vel[cage_slot] if self.cage.kind == "rigid" else None,
+                              pocket_friction_force=None if friction is None else friction[0][0],
+                              pocket_friction_loss=0.0 if friction is None else float(np.sum(friction[1][0])))
 
     def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
@@ -372,6 +388,12 @@ class BearingConnector:
             load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
         if self.guide is not None:
             self._add_land_force(t, pos, rot, vel, omega, out)
+        if self.cage.pocket_friction > 0:
+            friction = self._add_pocket_friction(pos, rot, vel, omega, out, react)
+            if parts is not None:
+                parts = (*parts, friction)
+        elif parts is not None:
+            parts = (*parts, None)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
         for slot, what in self.held.items():
@@ -463,6 +485,26 @@ class BearingConnector:
             out[:, slot, :3] -= force
             torque = cross(pos[:, cage] - pos[:, slot], -force) - moment
             out[:, slot, 3:] += np.einsum("bji,bj->bi", rot[:, slot], torque)
+
+    def _add_pocket_friction(self, pos, rot, vel, omega, out, react):
+        """Adds the ball–pocket friction (MODEL.md §11d, :func:`contact.cage.pocket_friction`)
+        to the balls' slots and its reaction (at the contact points) to the cage's per-ball
+        parts of ``react``, in place; returns (force on the balls (B, Z, 3) N, loss (B, Z) W).
+        The pocket normal forces are evaluated again here (numpy): the compiled kernels do
+        not return them, and the cost falls on scenes with pocket friction only."""
+        s, balls = self.layout["cage"], self.layout["balls"]
+        c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
+        cage = (pos[:, s], rot[:, s], vel[:, s], omega[:, s])
+        normal = cage_physics.pocket_forces(c, v, *cage, self.pocket_angles, self.bearing.pitch_radius,
+                                            self.cage.clearance, self.cage.stiffness, self.cage_damping)
+        force, point, loss = cage_physics.pocket_friction(normal, c, v, w, pos[:, s], vel[:, s], omega[:, s],
+                                                          self.bearing.ball_radius, self.cage.pocket_friction,
+                                                          self.cage.pocket_slip_scale)
+        out[:, balls, :3] += force
+        out[:, balls, 3:] += np.einsum("bzji,bzj->bzi", rot[:, balls], cross(point - c, force))
+        react[:, :, s, :3] -= force
+        react[:, :, s, 3:] -= np.einsum("bji,bzj->bzi", rot[:, s], cross(point - pos[:, s, None], force))
+        return force, loss
 
     def _numpy_forces(self, t, pos, rot, vel, omega):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of

@@ -131,8 +131,8 @@ class BearingResults:
         """Power lost by source, W, as time series (T,) (MODEL.md §11): 'traction' (traction
         and spin moment at all ball–race contacts, §6), 'rolling_resistance' (§11b),
         'contact_damping' (the normal contact damping, §3), 'ball_drag' (§8), 'cage'
-        (ball–pocket and guiding-land contacts), and their 'total'. Sources a scene does not
-        model are zero. Compare :meth:`drive_power`."""
+        (ball–pocket contacts with their friction, guiding land), and their 'total'. Sources
+        a scene does not model are zero. Compare :meth:`drive_power`."""
         zero = np.zeros_like(self.time)
 
         def both(name):
@@ -257,14 +257,16 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
 
 
 def _body_losses(s) -> tuple:
-    """(ball drag, cage pocket, guiding land) power losses of one :class:`ConnectorState`, W:
+    """(ball drag, cage pocket (damping and friction), guiding land) power losses of one
+    :class:`ConnectorState`, W:
     minus the power of each force pair over the velocities of the points it acts on (the
     pocket reaction acts on the cage at the ball centre, the land force at the cage centre)."""
     drag = -float(np.sum(s.drag_force * s.ball_velocity))
     pocket = land = 0.0
     if s.cage_position is not None:
         v_pocket = s.cage_velocity + cross(s.cage_omega, s.ball_position - s.cage_position)
-        pocket = -float(np.sum(s.cage_force * (s.ball_velocity - v_pocket)))
+        # + the pocket friction's, -F_f . v_t at the contact points (MODEL.md §11d)
+        pocket = -float(np.sum(s.cage_force * (s.ball_velocity - v_pocket))) + s.pocket_friction_loss
         if s.cage_land_force is not None:
             land = -float(s.cage_land_force @ s.cage_velocity)
     elif s.cage_force is not None:

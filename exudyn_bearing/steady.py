@@ -91,11 +91,12 @@ START_BUDGET = 1500
 class _OneBall:
     """The balance equations of one ball at azimuth 0 (x radial, y circumferential, z axial)."""
 
-    def __init__(self, bearing, lubricant, axial, w_i, w_o, drag, law, land=(0.0, 0.0)):
+    def __init__(self, bearing, lubricant, axial, w_i, w_o, drag, law, land=(0.0, 0.0), pocket=(0.0, 0.01)):
         self.b, self.lub, self.law = bearing, lubricant, law
         # guiding-land friction of the cage (MODEL.md §11d): (K, guiding race speed); the
         # pockets pass its torque on to the balls, T/(Z r_c) each against the orbit
         self.land = land
+        self.pocket = pocket  # ball–pocket friction (mu, slip scale m/s), MODEL.md §11d
         self.calls, self.budget = 0, math.inf
         self.axial, self.w_i, self.w_o = axial, w_i, w_o
         (self.r_gi, self.z_gi), (self.r_go, self.z_go) = bearing.groove_centres()
@@ -144,6 +145,23 @@ class _OneBall:
                                    self.grooves, self.b.ball_radius, self.signs)
         return kin, ball_race_forces(kin, self.params, self.lub, self.law)
 
+    def _pocket(self, c, w_c, w_b):
+        """(pocket force, pocket friction, contact point - ball centre) on the ball under the
+        land torque T = K (w_land - w_c): the Z pockets pass T on to the balls, so the cage's
+        torque balance about the axis, Z (r_c P + (p x F_f)_z) = T with the friction
+        F_f = mu |P| g (:func:`contact.cage.pocket_friction`, g from the slip direction at
+        p), gives the pocket load P (MODEL.md §11d, §12)."""
+        torque = self.land[0] * (self.land[1] - w_c) / self.b.balls
+        sign = 1.0 if torque >= 0 else -1.0
+        unit = np.array([[0.0, sign, 0.0]])
+        mu, slip_scale = self.pocket
+        g, point, _ = cage_physics.pocket_friction(unit, c[None], np.array([[0.0, w_c * c[0], 0.0]]), w_b[None],
+                                                   np.zeros(3), np.zeros(3), w_c * _E_Z, self.b.ball_radius,
+                                                   mu, slip_scale)
+        g, point = g[0], point[0]  # friction per newton of pocket load
+        load = abs(torque) / (c[0] + sign * np.cross(point, g)[2])
+        return load * unit[0], load * g, point - c
+
     def residual(self, x):
         self.calls += 1
         if self.calls > self.budget:
@@ -154,10 +172,11 @@ class _OneBall:
         if self.density > 0:
             force += cage_physics.drag_forces(c[None], np.array([[0.0, w_c * c[0], 0.0]]), _E_Z, np.zeros(3),
                                               self.c_d, self.density, self.b.ball_radius)[0]
+        moment = f.moment[0] + f.moment[1] - self.inertia * w_c * np.cross(_E_Z, w_b)
         if self.land[0] > 0:  # a centred cage (eccentricity 0)
-            force[1] += self.land[0] * (self.land[1] - w_c) / (self.b.balls * c[0])
-        gyro = self.inertia * w_c * np.cross(_E_Z, w_b)
-        moment = f.moment[0] + f.moment[1] - gyro
+            pocket, friction, arm = self._pocket(c, w_c, w_b)
+            force += pocket + friction
+            moment += np.cross(arm, friction)
         axial = f.force[0, 2] - self.axial / self.b.balls
         s = self.force_scale
         return np.concatenate([force / s, moment / (s * self.b.ball_radius), [axial / s]])
@@ -214,7 +233,8 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     friction = 0.0 if cage is None else cage.land_friction_constant(bearing, lubricant)
     if friction > 0:
         land = (friction, w_o if cage.guidance == "outer" else w_i)
-    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land)
+    pocket = (0.0, 0.01) if cage is None else (cage.pocket_friction, cage.pocket_slip_scale)
+    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land, pocket)
     lo, hi = ball.bounds()
     # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
     # outer-raceway control, the continuation from it can run away: then the exact

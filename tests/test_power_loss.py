@@ -146,3 +146,63 @@ def test_a_bug_in_a_user_function_is_not_reported_as_a_solver_failure(monkeypatc
     with pytest.raises(Exception, match="NameError: name 'x' is not defined") as caught:
         simulate(axial=1300.0, rpm=1800.0, time=0.001)
     assert not isinstance(caught.value, BearingSimulationError)
+
+
+def test_pocket_friction_is_coulomb_at_the_contact_point():
+    """A ball pushed along +x by its pocket with N = 5 N, spinning at w about z, cage at rest:
+    the contact lies at c - r x, the ball surface slides there at w r along -y, so the friction
+    is mu N along +y (Coulomb, far beyond the slip scale), its moment about the centre is
+    -r mu N about z (against the spin), and it dissipates mu N w r. Sliding along the normal
+    only, a pocket moving with the surface or no pocket load: no friction."""
+    from contact.cage import pocket_friction
+
+    mu, n_load, r, w, v_s = 0.1, 5.0, 0.0125, 600.0, 1e-3
+    centre = np.array([[0.08, 0.0, 0.0]])
+    zero = np.zeros(3)
+    force, point, loss = pocket_friction(np.array([[n_load, 0.0, 0.0]]), centre, np.zeros((1, 3)),
+                                         np.array([[0.0, 0.0, w]]), zero, zero, zero, r, mu, v_s)
+    assert point[0] == pytest.approx(centre[0] - [r, 0.0, 0.0])
+    slip = w * r  # 7.5 m/s
+    coulomb = mu * n_load * slip / math.hypot(slip, v_s)
+    assert force[0] == pytest.approx([0.0, coulomb, 0.0], abs=1e-12)
+    assert np.cross(point[0] - centre[0], force[0]) == pytest.approx([0.0, 0.0, -r * coulomb], abs=1e-12)
+    assert loss[0] == pytest.approx(coulomb * slip, rel=1e-12)
+    # only normal sliding, a pocket carried along with the ball's surface, no load
+    f_normal, _, _ = pocket_friction(np.array([[n_load, 0.0, 0.0]]), centre, np.array([[3.0, 0.0, 0.0]]),
+                                     np.zeros((1, 3)), zero, zero, zero, r, mu, v_s)
+    f_along, _, _ = pocket_friction(np.array([[n_load, 0.0, 0.0]]), centre, np.zeros((1, 3)),
+                                    np.array([[0.0, 0.0, w]]), zero, np.array([0.0, -slip, 0.0]), zero, r, mu, v_s)
+    f_free, _, l_free = pocket_friction(np.zeros((1, 3)), centre, np.zeros((1, 3)), np.array([[0.0, 0.0, w]]),
+                                        zero, zero, zero, r, mu, v_s)
+    assert np.all(f_normal == 0.0) and np.all(f_along == 0.0) and np.all(f_free == 0.0) and l_free[0] == 0.0
+
+
+def test_pocket_friction_steady_and_dynamic_agree_and_close_the_balance():
+    """Outer-guided cage with a 10-mm land (its friction torque loads the pockets) and pocket
+    friction mu = 0.3 (MODEL.md §11d): a dynamic run from the steady state stays on it, the
+    drive power equals the total loss within 1 %, the friction adds to the cage loss, and the
+    steady kinematic slip rises with mu (the friction resists the balls' spin)."""
+    from exudyn_bearing import steady_state
+    from exudyn_bearing.connector import CageModel
+
+    slips = [steady_state(axial=1300.0, rpm=1800.0, cage=CageModel(land_width=0.01, pocket_friction=mu))
+             .kinematic_cage_slip_percent for mu in (0.0, 0.1, 0.3)]
+    assert slips[0] < slips[1] < slips[2]
+    plain = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01))
+    run = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01, pocket_friction=0.3))
+    assert run.initial_steady_state is not None
+    assert run.kinematic_cage_slip_percent == pytest.approx(slips[2], abs=0.05)
+    loss, drive = _means(run)
+    assert loss["total"] == pytest.approx(drive, rel=0.01)
+    assert loss["cage"] > _means(plain)[0]["cage"] + 5.0
+
+
+@pytest.mark.parametrize("kwargs, key", [(dict(pocket_friction=-0.1), "pocket_friction"),
+                                         (dict(pocket_friction=float("nan")), "pocket_friction"),
+                                         (dict(kind="spring-chain", pocket_friction=0.1), "pocket_friction"),
+                                         (dict(pocket_slip_scale=0.0), "pocket_slip_scale")])
+def test_bad_pocket_friction_input_names_the_key(kwargs, key):
+    from exudyn_bearing.connector import CageModel
+
+    with pytest.raises(ValueError, match=key):
+        CageModel(**kwargs)

@@ -314,7 +314,8 @@ def test_cli_json():
     assert data["axial_displacement"] > 0 and data["radial_displacement"] == pytest.approx(0, abs=1e-9)
     # issue 16 item 7: the Python names, degrees beside radians, a unit for every key
     res = solve_load_distribution(B, axial=1300.0, rpm=0.0)
-    assert set(vars(res)) <= set(data) and set(data["units"]) == set(data) - {"units"}
+    assert set(vars(res)) <= set(data) and set(data["units"]) == set(data) - {"units", "inputs"}
+    assert "balls=16" in data["inputs"]["bearing"]  # what produced it
     np.testing.assert_allclose(data["inner_contact_angle_deg"], np.degrees(data["inner_contact_angle"]), rtol=1e-12)
     assert data["units"]["inner_load"] == "N" and data["units"]["azimuth_deg"] == "deg"
     table = subprocess.run([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--rpm", "1800",
