@@ -26,6 +26,12 @@ Example::
     [drag]                           # optional; fully flooded sphere drag if absent
     drag_coefficient = 0.5
     oil_volume_fraction = 1.0
+    [cage]                           # optional; CageModel() if absent (MODEL.md §1, §11d)
+    kind = "rigid"                   # or "spring-chain", "none"
+    guidance = "outer"               # or "inner", "balls"
+    guide_clearance = 0.4e-3         # diametral land play, m
+    land_width = 0.0                 # m; > 0: the land's oil-film friction torque
+    pocket_friction = 0.0            # ball-pocket friction coefficient
 """
 from __future__ import annotations
 
@@ -40,6 +46,7 @@ except ModuleNotFoundError:  # Python 3.10
 
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing, Material
+from .connector import CageModel
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
 __all__ = ["BearingFile", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
@@ -52,15 +59,18 @@ class BearingFile:
     bearing: Bearing
     lubricant: Lubricant = REFERENCE_LUBRICANT
     drag: BallDrag = REFERENCE_DRAG
+    cage: CageModel = CageModel()
 
 
-_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag"}
+_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage"}
+#: [cage] keys whose values are words, not numbers
+_CAGE_WORDS = {"kind", "guidance"}
 _BEARING_KEYS = {"balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
                  "inner_groove_radius", "outer_groove_radius", "contact_angle", "diametral_clearance",
                  "ball_mass"}
 
 
-def _table(data: dict, name: str, allowed: set[str]) -> dict:
+def _table(data: dict, name: str, allowed: set[str], words=frozenset()) -> dict:
     table = data.get(name, {})
     if not isinstance(table, dict):
         raise ValueError(f"[{name}] must be a table")
@@ -69,7 +79,10 @@ def _table(data: dict, name: str, allowed: set[str]) -> dict:
         raise ValueError(f"unknown key(s) in [{name}]: {', '.join(sorted(unknown))} "
                          f"(allowed: {', '.join(sorted(allowed))})")
     for key, value in table.items():
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if key in words:
+            if not isinstance(value, str):
+                raise ValueError(f"{name}.{key} must be a string, got {value!r}")
+        elif isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"{name}.{key} must be a number, got {value!r}")
     return dict(table)
 
@@ -126,7 +139,14 @@ def loads_bearing(text: str) -> BearingFile:
         bearing = Bearing.from_clearance(diametral_clearance=b["diametral_clearance"], **kwargs)
     lubricant = _dataclass_from(Lubricant, data, "lubricant") or REFERENCE_LUBRICANT
     drag = _dataclass_from(BallDrag, data, "drag") or REFERENCE_DRAG
-    return BearingFile(bearing, lubricant, drag)
+    cage = CageModel()
+    if "cage" in data:
+        table = _table(data, "cage", {f.name for f in fields(CageModel)}, _CAGE_WORDS)
+        try:
+            cage = CageModel(**table)
+        except ValueError as err:
+            raise ValueError(f"[cage] {err}") from None
+    return BearingFile(bearing, lubricant, drag, cage)
 
 
 def load_bearing(path) -> BearingFile:
@@ -137,7 +157,12 @@ def load_bearing(path) -> BearingFile:
 def _section(name: str, obj) -> str:
     lines = [f"[{name}]"]
     for f in fields(obj):
-        lines.append(f"{f.name} = {getattr(obj, f.name)!r}")
+        value = getattr(obj, f.name)
+        if value is None and f.default is None:  # TOML has no null: an absent key takes the default
+            continue
+        if value is None:
+            raise ValueError(f"{name}.{f.name} = None has no TOML form (its default is {f.default!r})")
+        lines.append(f"{f.name} = " + (f'"{value}"' if isinstance(value, str) else repr(value)))
     return "\n".join(lines)
 
 
@@ -152,7 +177,7 @@ def _degrees_exact(angle: float) -> float:
 
 
 def dumps_bearing(setup: BearingFile | Bearing) -> str:
-    """TOML text for a bearing (and lubricant, drag).
+    """TOML text for a bearing (and lubricant, drag, and a cage other than the default).
 
     :func:`loads_bearing` inverts it exactly, except that a free contact angle that no
     float number of degrees maps onto (about 1 in 10 arbitrary radian values) comes back
@@ -172,6 +197,8 @@ def dumps_bearing(setup: BearingFile | Bearing) -> str:
     else:
         text += _section("ball_material", b.ball_material) + "\n\n" + _section("race_material", b.race_material) + "\n\n"
     text += _section("lubricant", setup.lubricant) + "\n\n" + _section("drag", setup.drag) + "\n"
+    if setup.cage != CageModel():
+        text += "\n" + _section("cage", setup.cage) + "\n"
     return text
 
 

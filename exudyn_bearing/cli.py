@@ -73,7 +73,7 @@ def _simulate(args) -> int:
     settings = SolverSettings(solver=args.solver, step=args.step,
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
-                       time=args.time, settings=settings, drag=None if args.no_drag else setup.drag,
+                       time=args.time, settings=settings, drag=None if args.no_drag else setup.drag, cage=setup.cage,
                        contact_law=_law(args, quadrature_order=args.order),
                        error_estimate=args.error_estimate)
     data = summary.to_dict()
@@ -122,7 +122,7 @@ def _steady(args) -> int:
 
     setup = _setup(args.bearing)
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
-                         drag=None if args.no_drag else setup.drag, contact_law=_law(args))
+                         drag=None if args.no_drag else setup.drag, contact_law=_law(args), cage=setup.cage)
     data = state.to_dict()
     criteria = {"hirano_minimum_axial": hirano_minimum_axial(setup.bearing, args.rpm),
                 "gyroscopic_minimum_axial": gyroscopic_minimum_axial(
@@ -172,7 +172,7 @@ def _skid_map(args) -> int:
                               radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
                               time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
                               progress=lambda line: print(line, flush=True),
-                              contact_law=_law(args), refine=not args.no_refine)
+                              contact_law=_law(args), refine=not args.no_refine, cage=setup.cage)
     print(result.markdown())
     print(f"wrote {args.out}/" + ", ".join(result.files))
     if "skid_map.png" not in result.files:
@@ -198,7 +198,8 @@ def _render(args) -> int:
             raise ValueError(f"--gif: the folder of {args.gif} does not exist")
     files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
                        frames=args.frames, backend=args.backend, contact_law=_law(args),
-                       bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif)
+                       bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif, cage=setup.cage,
+                       drag=setup.drag)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 

@@ -270,14 +270,16 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
 
 
 def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto", contact_law=None, bearing=None, lubricant=None, animation=None):
+               backend="auto", contact_law=None, bearing=None, lubricant=None, animation=None, cage=None,
+               drag="default"):
     """Simulate ``bearing`` (default: the reference bearing; ``lubricant`` likewise; inner race
     driven at ``rpm``, outer race fixed) for
     ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
     the run (the CLI's ``render`` command), each labelled with its time and the slip colour
     scale; ``contact_law`` a :class:`contact.ballrace.ContactLaw` (default: the builder's);
-    ``animation``: also write the frames as an animated GIF to this path. Returns the
-    written paths (frames, then the animation)."""
+    ``animation``: also write the frames as an animated GIF to this path; ``cage`` a
+    :class:`~exudyn_bearing.connector.CageModel` and ``drag`` a ball drag (None: none) where
+    not the builder's defaults. Returns the written paths (frames, then the animation)."""
     import exudyn as exu
 
     from .builder import CreateAngularContactBearing
@@ -289,7 +291,9 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
     kw = {} if contact_law is None else dict(contactLaw=contact_law)
-    kw.update({k: v for k, v in (("bearing", bearing), ("lubricant", lubricant)) if v is not None})
+    kw.update({k: v for k, v in (("bearing", bearing), ("lubricant", lubricant), ("cage", cage)) if v is not None})
+    if drag != "default":
+        kw["ballDrag"] = drag
     h = CreateAngularContactBearing(mbs, innerRace=Driven(rpm), outerRace=Fixed(), axialForce=axial,
                                     radialForce=radial, **kw)
     AddBearingGraphics(mbs, h)

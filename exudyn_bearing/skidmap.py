@@ -23,6 +23,7 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
+from .connector import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .records import inputs_record, units_of
 from .steady import gyroscopic_minimum_axial, steady_state
@@ -91,7 +92,7 @@ class SkidPoint:
 
 def _run_point(args) -> dict:
     """Worker: one dynamic run; never raises (errors are reported in the point)."""
-    point, bearing, lubricant, drag, *law = args
+    point, bearing, lubricant, drag, law, cage = args
     start = _time.perf_counter()
     try:
         from .runner import SolverSettings, simulate
@@ -101,7 +102,7 @@ def _run_point(args) -> dict:
         length = point.time if point.time is not None else FIRST_TIME
         while True:
             s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=length,
-                         drag=drag, contact_law=law[0] if law else ContactLaw(),
+                         drag=drag, contact_law=law, cage=cage,
                          settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
             if point.time is not None or s.settled or length >= MAX_TIME:
                 break
@@ -159,7 +160,8 @@ class SkidMap:
 
     def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, drag: BallDrag | None = REFERENCE_DRAG,
                           contact_law: ContactLaw = ContactLaw(), level: float = 1.0,
-                          tolerance: float = 0.04, confirm_time: float | None = 0.1) -> list[dict]:
+                          tolerance: float = 0.04, confirm_time: float | None = 0.1,
+                          cage: CageModel = CageModel()) -> list[dict]:
         """:meth:`thresholds`, refined where the steady-state solver applies (radial 0):
         the load at which the steady kinematic cage slip crosses ``level`` %, bisected
         between the bracketing grid loads until the bracket is ``tolerance`` of its load
@@ -180,7 +182,7 @@ class SkidMap:
 
             def slip(axial):
                 state = steady_state(self.bearing, lubricant, axial=axial, rpm=entry["rpm"], drag=drag,
-                                     contact_law=contact_law)
+                                     contact_law=contact_law, cage=cage)
                 return state.kinematic_cage_slip_percent if state.converged else None
 
             lo, hi = bracket[0].axial, bracket[1].axial
@@ -201,7 +203,7 @@ class SkidMap:
                 from .runner import simulate
 
                 dyn = [simulate(self.bearing, lubricant, axial=a, rpm=entry["rpm"], time=confirm_time, drag=drag,
-                                contact_law=contact_law).kinematic_cage_slip_percent for a in (lo, hi)]
+                                contact_law=contact_law, cage=cage).kinematic_cage_slip_percent for a in (lo, hi)]
                 # the dynamic model integrates the fast traction rule (within ~1e-2 of the
                 # accurate one the steady solver uses): its own crossing, interpolated (or
                 # extrapolated) through the two runs, must lie within the bracket's width
@@ -351,11 +353,11 @@ def _load_done(path: Path) -> dict:
     return done
 
 
-def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law) -> None:
+def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law, cage=None) -> None:
     """Record the map's inputs in ``folder/inputs.json``; a resume into a folder whose
     points came from other inputs is refused (it would serve results of another bearing,
     oil or law)."""
-    record = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law)
+    record = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage or CageModel())
     path = folder / "inputs.json"
     if path.exists():
         try:
@@ -384,7 +386,8 @@ def _one_thread_per_worker():
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
              axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
              drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
-             progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True) -> SkidMap:
+             progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True,
+             cage: CageModel = CageModel()) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) and return a
     :class:`SkidMap`. Each point runs ``time`` s, or with ``time=None`` (default) until it
     settles (:meth:`BearingResults.settled`): 0.1 s, then 0.2, 0.4, ... s from the start,
@@ -405,11 +408,13 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     contact_law : contact.ballrace.ContactLaw
         Ball–race physics of every point (default: Crook with the limiting shear, MODEL.md
         §6a). A resumed map reuses the points in ``out`` only if they came from the same
-        bearing, lubricant, drag, law and package version (``out/inputs.json``); otherwise
-        a ValueError.
+        bearing, lubricant, drag, law, cage and package version (``out/inputs.json``);
+        otherwise a ValueError.
     refine : bool
         After the grid, refine each pure-axial threshold with the steady-state solver and
         confirm its bracket dynamically (:meth:`SkidMap.refine_thresholds`).
+    cage : CageModel
+        The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
     for name, values, low in (("axial", axial, 0.0), ("radial", radial, 0.0), ("rpm", rpm, None)):
         bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
@@ -428,15 +433,15 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     done = {}
     if journal is not None:
         journal.parent.mkdir(parents=True, exist_ok=True)
-        _check_inputs(journal.parent, bearing, lubricant, drag, contact_law)
+        _check_inputs(journal.parent, bearing, lubricant, drag, contact_law, cage)
         done = _load_done(journal)
     todo = [p for p in grid if p.key not in done]
     result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done],
-                     inputs=inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law))
+                     inputs=inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage))
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()
-    jobs = [(p, bearing, lubricant, drag, contact_law) for p in todo]
+    jobs = [(p, bearing, lubricant, drag, contact_law, cage) for p in todo]
 
     def record(data):
         point = SkidPoint(**data)
@@ -474,7 +479,7 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     order = {p.key: i for i, p in enumerate(grid)}
     result.points.sort(key=lambda p: order[p.key])
     if refine:
-        result.refined = result.refine_thresholds(lubricant, drag, contact_law)
+        result.refined = result.refine_thresholds(lubricant, drag, contact_law, cage=cage)
         if progress:
             for t in result.refined:
                 if "bracket" in t:

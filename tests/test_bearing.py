@@ -56,6 +56,24 @@ def test_round_trip_every_field():
     assert again == setup
     example = loads_bearing(EXAMPLE)
     assert loads_bearing(dumps_bearing(example)) == example
+    # a cage other than the default: [cage], words and numbers, None-valued keys left out
+    from exudyn_bearing.connector import CageModel
+
+    caged = BearingFile(b, cage=CageModel(guidance="inner", guide_clearance=0.3e-3, land_width=5e-3,
+                                          pocket_friction=0.15, mass=0.05))
+    text = dumps_bearing(caged)
+    assert '[cage]' in text and 'guidance = "inner"' in text and "damping" not in text.split("[cage]")[1]
+    assert loads_bearing(text) == caged
+    assert "[cage]" not in dumps_bearing(setup)  # the default cage is not written
+
+
+def test_bad_cage_section_names_the_key():
+    with pytest.raises(ValueError, match=r"\[cage\] pocket_friction"):
+        loads_bearing(EXAMPLE + "\n[cage]\npocket_friction = -0.1\n")
+    with pytest.raises(ValueError, match="cage.guidance must be a string"):
+        loads_bearing(EXAMPLE + "\n[cage]\nguidance = 1\n")
+    with pytest.raises(ValueError, match="unknown key.*pocket_mu"):
+        loads_bearing(EXAMPLE + "\n[cage]\npocket_mu = 0.1\n")
 
 
 BASE = dict(balls=16, ball_diameter=25e-3, pitch_diameter=155e-3, inner_conformity=0.52,

@@ -492,6 +492,26 @@ def test_render_takes_a_bearing_file(tmp_path):
     assert_real_png(frame, min_bytes=10_000)
 
 
+def test_cage_section_of_a_bearing_file_reaches_simulate_and_steady(tmp_path):
+    """A [cage] with a 10-mm outer land and pocket friction (MODEL.md §11d) in the bearing
+    file: `simulate` and `steady` run with it (the land's friction torque loads the pockets,
+    so the cage loss is far above the frictionless cage's pocket damping, and the steady
+    kinematic slip lies above the same bearing's without it) and record it in `inputs`."""
+    from exudyn_bearing import REFERENCE_BEARING, BearingFile, save_bearing
+    from exudyn_bearing.connector import CageModel
+
+    save_bearing(BearingFile(REFERENCE_BEARING, cage=CageModel(land_width=0.01, pocket_friction=0.3)),
+                 tmp_path / "caged.toml")
+    save_bearing(REFERENCE_BEARING, tmp_path / "plain.toml")
+    run, _ = cli_json("simulate", "--axial", 1300, "--time", 0.005, "--bearing", "caged.toml", cwd=tmp_path)
+    assert "pocket_friction=0.3" in run["inputs"]["cage"] and "land_width=0.01" in run["inputs"]["cage"]
+    assert run["power_loss_W"]["cage"] > 50.0  # reference bearing: ~85 W of land and pocket friction
+    steady = {name: cli_json("steady", "--axial", 1300, "--bearing", f"{name}.toml", cwd=tmp_path)[0]
+              for name in ("caged", "plain")}
+    assert steady["caged"]["kinematic_cage_slip_percent"] > steady["plain"]["kinematic_cage_slip_percent"] + 0.2
+    assert "pocket_friction=0.3" in steady["caged"]["inputs"]["cage"]
+
+
 def test_output_into_a_closed_pipe_is_not_an_error(tmp_path):
     """`loads ... | head -1`: the reader closes the pipe early; no BrokenPipeError traceback."""
     proc = subprocess.Popen([sys.executable, "-m", "exudyn_bearing", "loads", "--axial", "1300", "--rpm", "1800"],
