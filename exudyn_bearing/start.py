@@ -1,6 +1,6 @@
-"""The state a bearing starts from (MODEL.md §7, §12, §12a): the steady rolling state under
-axial load, the quasi-dynamic balance of every ball under radial load, else pure rolling
-with raceway control (Jones), the controlling contact chosen by its spin resistance."""
+"""The state a bearing starts from (MODEL.md §7, §12): the steady rolling state where it
+applies, else pure rolling with raceway control (Jones), the controlling contact chosen by
+its spin resistance."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,39 +9,26 @@ __all__ = ["raceway_control"]
 
 
 def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
-                 contactLaw, ballDrag, cage=None, loads=None, omega_azimuth=None, cage_speed=None):
-    """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
-    pure axial load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` under radial load
-    (from the quasi-static solution ``loads`` and the pure-rolling start ``omega_azimuth``
-    (Z, 3), rad/s in the balls' azimuth frames, and ``cage_speed``), or None for the
-    pure-rolling start ('rolling', or 'auto' where neither applies or converges). Loads
+                 contactLaw, ballDrag, cage=None):
+    """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
+    pure-rolling start ('rolling', or 'auto' where the steady state does not apply). Loads
     given as functions of time start from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
     if initial_state == "rolling":
         return None
     why = None
-    if radial == 0 and axial <= 0:
-        why = "it needs a load (an axial force > 0, or a radial force)"
+    if radial != 0 or axial <= 0:
+        why = "it needs an axial force alone (radial = 0, axial > 0)"
     elif inner.kind not in ("driven", "free") or displaced:
         why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
         why = "the races turn at the same speed"
-    elif radial != 0 and (sense < 0 or loads is None):
-        why = "under radial load it needs a positive inner-race speed"
-    if why is None and radial == 0:
+    if why is None:
         from .steady import steady_state
 
         state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
                              drag=ballDrag, contact_law=contactLaw, cage=cage)
-        if state.converged:
-            return state
-        why = state.message
-    elif why is None:
-        from .quasidynamic import quasi_dynamic_state
-
-        state = quasi_dynamic_state(bearing, lubricant, loads, rpm=rpm_i, outer_rpm=rpm_o, drag=ballDrag,
-                                    contact_law=contactLaw, cage=cage, omega=omega_azimuth, cage_speed=cage_speed)
         if state.converged:
             return state
         why = state.message
