@@ -120,10 +120,11 @@ MATRIX = {
     "g72": ("35-mm high-speed, 667 N, 72 000 rpm", _high_speed, 667.0, 0.0, 72000.0),
     "h1": ("40-mm spindle, 1 kN, 55 000 rpm", _spindle_40mm, 1000.0, 0.0, 55000.0),
     "h2": ("40-mm spindle, 1 kN + 500 N radial, 55 000 rpm", _spindle_40mm, 1000.0, 500.0, 55000.0),
+    "h3": ("40-mm spindle, 1 kN, 4 000 rpm (thin film)", _spindle_40mm, 1000.0, 0.0, 4000.0),
 }
 
 
-def matrix(sim_time, names, law=None):
+def matrix(sim_time, names, law=None, settings=None):
     from exudyn_bearing import simulate
     from exudyn_bearing.errors import BearingSimulationError
 
@@ -134,6 +135,8 @@ def matrix(sim_time, names, law=None):
         kw = {} if made is None else (made if isinstance(made, dict) else {"bearing": made})
         if law is not None:
             kw["contact_law"] = law
+        if settings is not None:
+            kw["settings"] = settings
         start = time.perf_counter()
         try:
             run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
@@ -165,10 +168,17 @@ def main():
     parser.add_argument("--matrix", action="store_true", help="the heavily-loaded/high-speed case matrix")
     parser.add_argument("--cases", default=",".join(MATRIX), help="matrix cases, comma-separated")
     parser.add_argument("--traction", default=None, help="matrix: ContactLaw(traction=...) for every case")
+    parser.add_argument("--recovery-iterations", type=int, default=None,
+                        help="matrix: SolverSettings(step_recovery_iterations=...) for every case")
     args = parser.parse_args()
     if args.matrix:
         law = ContactLaw(traction=args.traction) if args.traction else None
-        matrix(args.time, [c.strip() for c in args.cases.split(",") if c.strip()], law)
+        settings = None
+        if args.recovery_iterations is not None:
+            from exudyn_bearing import SolverSettings
+
+            settings = SolverSettings(progress=False, step_recovery_iterations=args.recovery_iterations)
+        matrix(args.time, [c.strip() for c in args.cases.split(",") if c.strip()], law, settings)
         return
     # interleaved repeats: a burst of load on the shared machine hits all scenes alike
     walls = {"ours": [], "numpy": [], "exudyn": []}

@@ -52,7 +52,19 @@ def test_generalized_alpha_estimate_is_half_the_error():
     (dict(solver="euler"), "solver"), (dict(step=0.0), "step"), (dict(step=float("nan")), "step"),
     (dict(spectral_radius=1.5), "spectral_radius"), (dict(relative_tolerance=-1e-6), "relative_tolerance"),
     (dict(jacobian="analytic"), "jacobian"), (dict(newton_contractivity=1.0), "newton_contractivity"),
-    (dict(newton_contractivity=0.0), "newton_contractivity")])
+    (dict(newton_contractivity=0.0), "newton_contractivity"),
+    (dict(step_recovery_iterations=0), "step_recovery_iterations"),
+    (dict(step_recovery_iterations=2.5), "step_recovery_iterations")])
 def test_solver_settings_reject_bad_values(kwargs, name):
     with pytest.raises(ValueError, match=name):
         SolverSettings(**kwargs)
+
+
+def test_step_recovery_reaches_exudyn():
+    """SolverSettings.step_recovery_iterations is Exudyn's adaptiveStepRecoveryIterations of the
+    run (Exudyn's own default is 7)."""
+    from exudyn_bearing.runner import _exudyn_settings
+
+    assert _exudyn_settings(SolverSettings(), 0.01).timeIntegration.adaptiveStepRecoveryIterations == 5
+    ss = _exudyn_settings(SolverSettings(step_recovery_iterations=7), 0.01)
+    assert ss.timeIntegration.adaptiveStepRecoveryIterations == 7
