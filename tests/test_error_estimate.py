@@ -65,6 +65,6 @@ def test_step_recovery_reaches_exudyn():
     run (Exudyn's own default is 7)."""
     from exudyn_bearing.runner import _exudyn_settings
 
-    assert _exudyn_settings(SolverSettings(), 0.01).timeIntegration.adaptiveStepRecoveryIterations == 5
-    ss = _exudyn_settings(SolverSettings(step_recovery_iterations=7), 0.01)
+    assert _exudyn_settings(SolverSettings(step=1e-4), 0.01).timeIntegration.adaptiveStepRecoveryIterations == 5
+    ss = _exudyn_settings(SolverSettings(step=1e-4, step_recovery_iterations=7), 0.01)
     assert ss.timeIntegration.adaptiveStepRecoveryIterations == 7
