@@ -763,6 +763,32 @@ def land_forces(cage_o, cage_v, race_o, race_v, axis, play, stiffness, damping, 
 
 
 @njit(cache=True, error_model="numpy")
+def pocket_friction(cage_force, c, v, wb, cage_o, cage_v, cage_w, ball_radius, mu, slip_scale, friction, point):
+    """Ball–pocket friction of B states (MODEL.md §11d), as :func:`contact.cage.pocket_friction`:
+    the force on each ball into ``friction`` (B, Z, 3), N, and its contact point into ``point``
+    (B, Z, 3), m, from the pocket forces ``cage_force`` (B, Z, 3), N."""
+    nb, z = c.shape[0], c.shape[1]
+    for ib in range(nb):
+        cw0, cw1, cw2 = cage_w[ib, 0], cage_w[ib, 1], cage_w[ib, 2]
+        for j in range(z):
+            f0, f1, f2 = cage_force[ib, j, 0], cage_force[ib, j, 1], cage_force[ib, j, 2]
+            load = math.sqrt(f0 * f0 + f1 * f1 + f2 * f2)
+            inv = 1.0 / max(load, 1e-300)
+            a0, a1, a2 = -ball_radius * f0 * inv, -ball_radius * f1 * inv, -ball_radius * f2 * inv  # p - c
+            p0, p1, p2 = c[ib, j, 0] + a0, c[ib, j, 1] + a1, c[ib, j, 2] + a2
+            w0, w1, w2 = wb[ib, j, 0], wb[ib, j, 1], wb[ib, j, 2]
+            r0, r1, r2 = p0 - cage_o[ib, 0], p1 - cage_o[ib, 1], p2 - cage_o[ib, 2]
+            u0 = v[ib, j, 0] + w1 * a2 - w2 * a1 - (cage_v[ib, 0] + cw1 * r2 - cw2 * r1)
+            u1 = v[ib, j, 1] + w2 * a0 - w0 * a2 - (cage_v[ib, 1] + cw2 * r0 - cw0 * r2)
+            u2 = v[ib, j, 2] + w0 * a1 - w1 * a0 - (cage_v[ib, 2] + cw0 * r1 - cw1 * r0)
+            un = (u0 * f0 + u1 * f1 + u2 * f2) * inv
+            t0, t1, t2 = u0 - un * f0 * inv, u1 - un * f1 * inv, u2 - un * f2 * inv
+            scale = mu * load / math.sqrt(t0 * t0 + t1 * t1 + t2 * t2 + slip_scale * slip_scale)
+            friction[ib, j, 0], friction[ib, j, 1], friction[ib, j, 2] = -scale * t0, -scale * t1, -scale * t2
+            point[ib, j, 0], point[ib, j, 1], point[ib, j, 2] = p0, p1, p2
+
+
+@njit(cache=True, error_model="numpy")
 def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pitch_radius, clearance,
                   stiffness, damping, axis, origin, drag_factor, cage_force, drag_force):
     """Cage forces (``kind`` 1: rigid cage pockets, MODEL.md §1; 2: spring chain P9/P10;

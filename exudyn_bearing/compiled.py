@@ -91,9 +91,12 @@ def _add_reaction(react, ib, j, s, rot, lever, f, m, sign):
 
 
 @njit(cache=True, error_model="numpy")
-def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force, out, react):
+def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force, out, react,
+              friction, point, has_friction):
     """Per-slot forces without the ball-caused race/cage parts (out, B x n x 6) and each
-    ball's contributions to the race and cage slots (react, B x Z x n x 6)."""
+    ball's contributions to the race and cage slots (react, B x Z x n x 6); with
+    ``has_friction`` also the pocket friction (``friction`` on the balls at ``point``,
+    B x Z x 3, MODEL.md §11d)."""
     out[:] = 0.0
     react[:] = 0.0
     no_moment = np.zeros(3)
@@ -105,8 +108,16 @@ def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, d
             m0 = moment[ib, 0, j, 0] + moment[ib, 1, j, 0]
             m1 = moment[ib, 0, j, 1] + moment[ib, 1, j, 1]
             m2 = moment[ib, 0, j, 2] + moment[ib, 1, j, 2]
+            if has_friction:  # (p - c) x F_f about the ball centre
+                a0, a1, a2 = point[ib, j, 0] - c[ib, j, 0], point[ib, j, 1] - c[ib, j, 1], point[ib, j, 2] - c[ib, j, 2]
+                ff = friction[ib, j]
+                m0 += a1 * ff[2] - a2 * ff[1]
+                m1 += a2 * ff[0] - a0 * ff[2]
+                m2 += a0 * ff[1] - a1 * ff[0]
             for i in range(3):
                 out[ib, sb, i] = force[ib, 0, j, i] + force[ib, 1, j, i] + cage_force[ib, j, i] + drag_force[ib, j, i]
+                if has_friction:
+                    out[ib, sb, i] += friction[ib, j, i]
                 out[ib, sb, 3 + i] = A[0, i] * m0 + A[1, i] * m1 + A[2, i] * m2
             for k in range(2):
                 s = slots[k]
@@ -118,6 +129,10 @@ def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, d
                 for i in range(3):
                     lever[i] = c[ib, j, i] - pos[ib, cage_slot, i]
                 _add_reaction(react, ib, j, cage_slot, rot, lever, cage_force[ib, j], no_moment, -1.0)
+                if has_friction:  # the cage takes -F_f at the contact point
+                    for i in range(3):
+                        lever[i] = point[ib, j, i] - pos[ib, cage_slot, i]
+                    _add_reaction(react, ib, j, cage_slot, rot, lever, friction[ib, j], no_moment, -1.0)
 
 
 HELD_NONE, HELD_ROTATION, HELD_ALL = 0, 1, 2
@@ -131,7 +146,7 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
                drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, applied, held,
                driven,
-               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k):
+               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k, pocket_mu, pocket_slip):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
     guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force (N) on the
@@ -180,10 +195,15 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
     kernels.cage_and_drag(c, v, cage_kind, pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(),
                           omega[:, cs].copy(), pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping,
                           axis, origin, drag_factor, cage_force, drag_force)
+    friction, point = np.empty((1, z, 3)), np.empty((1, z, 3))
+    has_friction = pocket_mu > 0.0 and cage_kind == 1
+    if has_friction:
+        kernels.pocket_friction(cage_force, c, v, w, pos[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy(),
+                                ball_radius, pocket_mu, pocket_slip, friction, point)
     o6 = out.reshape(n, 6)
     react = np.empty((1, z, n, 6))
     _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force,
-              o6.reshape(1, n, 6), react)
+              o6.reshape(1, n, 6), react, friction, point, has_friction)
     for j in range(z):
         for s in range(n):
             for i in range(6):
@@ -338,6 +358,9 @@ class CompiledForces:
         self.th_k = float(lub.temperature_viscosity / lub.thermal_conductivity) if (crook and law.thermal_film) else 0.0
         self.cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
         self.cage_slot = con.layout["cage"] if self.cage_kind == 1 else -1
+        # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
+        self.pocket = (float(con.cage.pocket_friction) if self.cage_kind == 1 else 0.0,
+                       float(con.cage.pocket_slip_scale))
         drag = con.drag
         self.drag_factor = 0.0
         if drag is not None and drag.drag_coefficient * drag.oil_volume_fraction > 0:
@@ -392,7 +415,7 @@ class CompiledForces:
                             *self.cage_args, self.guide_race, *self.guide,
                             np.asarray(con.applied_force(t), dtype=float), self.held, driven,
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
-                            self.lam_s, self.kap_e, self.rr_width, self.th_k)
+                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket)
         return status, self.out
 
     def _arrays(self, bsz):
@@ -402,7 +425,7 @@ class CompiledForces:
                 ro=np.empty((bsz, 2, 3)), rr=np.empty((bsz, 2, 3, 3)), rv=np.empty((bsz, 2, 3)),
                 rw=np.empty((bsz, 2, 3)), force=np.empty((bsz, 2, z, 3)), moment=np.empty((bsz, 2, z, 3)),
                 penetration=np.empty((bsz, 2, z)), load=np.empty((bsz, 2, z)), cage=np.empty((bsz, z, 3)),
-                drag=np.empty((bsz, z, 3)))
+                drag=np.empty((bsz, z, 3)), friction=np.empty((bsz, z, 3)), point=np.empty((bsz, z, 3)))
         return self._work[bsz]
 
     def __call__(self, t, pos, rot, vel, omega, same_contacts=None):
@@ -461,9 +484,13 @@ class CompiledForces:
         kernels.cage_and_drag(c, v, self.cage_kind, *cage, con.pocket_angles,
                               con.bearing.pitch_radius, con.cage.clearance, con.cage.stiffness, con.cage_damping,
                               con.axis, con.origin, self.drag_factor, w["cage"], w["drag"])
+        has_friction = self.pocket[0] > 0.0
+        if has_friction:
+            kernels.pocket_friction(w["cage"], c, v, np.take(omega, self.balls, axis=1), cage[0], cage[2], cage[3],
+                                    con.bearing.ball_radius, *self.pocket, w["friction"], w["point"])
         n = con.n_nodes
         out = np.empty((bsz, n, 6))
         react = np.empty((bsz, self.balls.shape[0], n, 6))
         _assemble(self.balls, self.slots, self.cage_slot, c, pos, rot, w["force"], w["moment"], w["cage"], w["drag"],
-                  out, react)
+                  out, react, w["friction"], w["point"], has_friction)
         return out, react, w["penetration"], w["load"]

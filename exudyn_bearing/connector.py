@@ -323,7 +323,7 @@ class BearingConnector:
         reference) and velocities q_t: the force user function. One compiled call when the
         compiled path applies; a state it cannot take (not finite, a ball out of its groove)
         goes through :meth:`forces`, which records why and returns NaN."""
-        if self._compiled is not None and self.cage.pocket_friction <= 0:  # the one-call kernel has no pocket friction
+        if self._compiled is not None:
             status, out = self._compiled.single(t, q, q_t, self.reference)
             if status == 0:
                 return out.copy()
@@ -388,12 +388,10 @@ class BearingConnector:
             load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
         if self.guide is not None:
             self._add_land_force(t, pos, rot, vel, omega, out)
-        if self.cage.pocket_friction > 0:
-            friction = self._add_pocket_friction(pos, rot, vel, omega, out, react)
-            if parts is not None:
-                parts = (*parts, friction)
-        elif parts is not None:
-            parts = (*parts, None)
+        if parts is not None:  # the numpy path (the compiled kernels add the pocket friction themselves)
+            friction = self._add_pocket_friction(pos, rot, vel, omega, out, react) if self.cage.pocket_friction > 0 \
+                else None
+            parts = (*parts, friction)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
         for slot, what in self.held.items():
@@ -489,9 +487,9 @@ class BearingConnector:
     def _add_pocket_friction(self, pos, rot, vel, omega, out, react):
         """Adds the ball–pocket friction (MODEL.md §11d, :func:`contact.cage.pocket_friction`)
         to the balls' slots and its reaction (at the contact points) to the cage's per-ball
-        parts of ``react``, in place; returns (force on the balls (B, Z, 3) N, loss (B, Z) W).
-        The pocket normal forces are evaluated again here (numpy): the compiled kernels do
-        not return them, and the cost falls on scenes with pocket friction only."""
+        parts of ``react``, in place (the numpy path; the compiled one in
+        :func:`contact.compiled.pocket_friction`); returns (force on the balls (B, Z, 3) N,
+        loss (B, Z) W)."""
         s, balls = self.layout["cage"], self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
         cage = (pos[:, s], rot[:, s], vel[:, s], omega[:, s])

@@ -129,6 +129,8 @@ SCENES = {
     "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
     # MODEL.md §11d: the outer land's friction torque on the cage (and its reaction)
     "land friction, outer-guided cage": dict(axialForce=1300.0, cage=CageModel(land_width=0.01)),
+    # MODEL.md §11d: ball–pocket friction at the contact points (the state's 1-um noise loads the pockets)
+    "pocket friction": dict(axialForce=1300.0, cage=CageModel(land_width=0.01, pocket_friction=0.3)),
     # MODEL.md §11b, §11e: the rolling-resistance couple and the thermal film factor
     "rolling resistance, thermal film, combined load": dict(
         axialForce=2200.0, radialForce=2000.0, law=ContactLaw(rolling_resistance=True, thermal_film=True)),
@@ -211,7 +213,7 @@ def test_spin_moment_term_matches_numpy_path():
 
 
 @pytest.mark.parametrize("name", ["axial, rigid cage, drag", "spring chain, no drag", "pocket play, free outer race",
-                                  "speed ramp, inner-guided cage, turning outer race"])
+                                  "speed ramp, inner-guided cage, turning outer race", "pocket friction"])
 def test_connector_jacobian_compiled_matches_numpy(name):
     """The compiled Jacobian (compiled states, kernels and assembly) equals the numpy one up
     to finite-difference noise of the float32 rays: ball blocks, coupled balls (spring
