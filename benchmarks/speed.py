@@ -113,6 +113,7 @@ MATRIX = {
     "d": ("reference, 10 kN axial, 1800 rpm", None, 10000.0, 0.0, 1800.0),
     "e1": ("deep groove, 1 kN radial + 200 N axial, 3000 rpm", _deep_groove, 200.0, 1000.0, 3000.0),
     "e2": ("deep groove, 2.5 kN radial, 3000 rpm", _deep_groove, 0.0, 2500.0, 3000.0),
+    "e3": ("deep groove, 1 kN axial, 3000 rpm", _deep_groove, 1000.0, 0.0, 3000.0),
     "f1": ("spindle, 300 N axial, 12 000 rpm", _spindle, 300.0, 0.0, 12000.0),
     "f2": ("spindle, 300 N + 600 N radial, 12 000 rpm", _spindle, 300.0, 600.0, 12000.0),
     "g28": ("35-mm high-speed, 667 N, 28 000 rpm", _high_speed, 667.0, 0.0, 28000.0),
