@@ -19,7 +19,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from exudyn_bearing import REFERENCE_LUBRICANT  # noqa: E402
-from exudyn_bearing.connector import CageModel  # noqa: E402
+from exudyn_bearing.cage import CageModel  # noqa: E402
 from exudyn_bearing.errors import BearingSimulationError  # noqa: E402
 from exudyn_bearing.races import Driven  # noqa: E402
 from tests.test_extreme import RPM, W, assert_bounded, run  # noqa: E402

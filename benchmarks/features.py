@@ -14,7 +14,7 @@ import exudyn as exu
 
 from contact.ballrace import ContactLaw
 from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.connector import CageModel
+from exudyn_bearing.cage import CageModel
 from exudyn_bearing.runner import SolverSettings, run_solver
 
 OPTIONS = {

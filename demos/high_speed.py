@@ -20,7 +20,7 @@ from pathlib import Path
 
 from contact.ballrace import ContactLaw
 from exudyn_bearing import __version__, simulate
-from exudyn_bearing.connector import CageModel
+from exudyn_bearing.cage import CageModel
 from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG
 
 AXIAL = 667.0

@@ -17,7 +17,7 @@ from . import races
 from .bearing import BallDrag, Bearing, Material, STEEL
 from .bearingfile import BearingFile, dumps_bearing, load_bearing, loads_bearing, save_bearing
 from .builder import BearingHandle, CreateAngularContactBearing
-from .connector import CageModel
+from .cage import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM
 from .quasistatic import LoadDistribution, QuasiStaticError, solve_load_distribution
 from .runner import BearingSimulationError, SolverSettings, run_solver, simulate

@@ -46,7 +46,7 @@ except ModuleNotFoundError:  # Python 3.10
 
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing, Material
-from .connector import CageModel
+from .cage import CageModel
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
 __all__ = ["BearingFile", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]

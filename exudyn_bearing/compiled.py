@@ -253,7 +253,7 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
 
 @njit(cache=True, error_model="numpy")
 def jacobian_states(pos, rot, vel, w_local, col_group, col_k, col_v, group_mask, eps, turn, p2, r2, v2, w2):
-    """The block Jacobian's states (``BearingConnector.jacobian``): state 0 the base, state
+    """The block Jacobian's states (:func:`exudyn_bearing.jacobian.block_jacobian`): state 0 the base, state
     i + 1 column i's perturbation of every node of its group (``group_mask``) — position
     ``eps[0]``, rotation A -> A turn[k - 3] (``turn`` = exp(eps[1] e_k~)), velocity ``eps[2]``,
     local angular velocity ``eps[3]``. Writes p2, r2, v2 and the GLOBAL angular velocities w2

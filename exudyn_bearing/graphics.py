@@ -278,7 +278,7 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
     the run (the CLI's ``render`` command), each labelled with its time and the slip colour
     scale; ``contact_law`` a :class:`contact.ballrace.ContactLaw` (default: the builder's);
     ``animation``: also write the frames as an animated GIF to this path; ``cage`` a
-    :class:`~exudyn_bearing.connector.CageModel` and ``drag`` a ball drag (None: none) where
+    :class:`~exudyn_bearing.cage.CageModel` and ``drag`` a ball drag (None: none) where
     not the builder's defaults. Returns the written paths (frames, then the animation)."""
     import exudyn as exu
 

@@ -12,7 +12,7 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from .bearing import BallDrag, Bearing
-from .connector import CageModel
+from .cage import CageModel
 from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .records import inputs_record, units_of

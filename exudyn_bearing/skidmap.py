@@ -23,7 +23,7 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
-from .connector import CageModel
+from .cage import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .records import inputs_record, units_of
 from .steady import gyroscopic_minimum_axial, steady_state

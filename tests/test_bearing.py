@@ -57,7 +57,7 @@ def test_round_trip_every_field():
     example = loads_bearing(EXAMPLE)
     assert loads_bearing(dumps_bearing(example)) == example
     # a cage other than the default: [cage], words and numbers, None-valued keys left out
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     caged = BearingFile(b, cage=CageModel(guidance="inner", guide_clearance=0.3e-3, land_width=5e-3,
                                           pocket_friction=0.15, mass=0.05))

@@ -498,7 +498,7 @@ def test_cage_section_of_a_bearing_file_reaches_simulate_and_steady(tmp_path):
     so the cage loss is far above the frictionless cage's pocket damping, and the steady
     kinematic slip lies above the same bearing's without it) and record it in `inputs`."""
     from exudyn_bearing import REFERENCE_BEARING, BearingFile, save_bearing
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     save_bearing(BearingFile(REFERENCE_BEARING, cage=CageModel(land_width=0.01, pocket_friction=0.3)),
                  tmp_path / "caged.toml")

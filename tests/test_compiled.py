@@ -22,7 +22,7 @@ from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
 from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
-from exudyn_bearing.connector import CageModel  # noqa: E402
+from exudyn_bearing.cage import CageModel  # noqa: E402
 
 
 def _contacts(n, seed=0):

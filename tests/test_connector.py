@@ -38,7 +38,7 @@ from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
 from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
-from exudyn_bearing.connector import CageModel  # noqa: E402
+from exudyn_bearing.cage import CageModel  # noqa: E402
 
 BRG = REFERENCE_BEARING
 LUB = REFERENCE_LUBRICANT

@@ -69,7 +69,7 @@ def test_land_friction_is_the_short_journal_shear_and_closes_the_balance():
     balances within 1 %."""
     from contact.cage import land_friction_constant, land_friction_torque
     from exudyn_bearing import REFERENCE_LUBRICANT as LUB
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     k = land_friction_constant(0.04, 0.09, 0.01, 0.2e-3)
     assert k == pytest.approx(2 * math.pi * 0.04 * 0.09 ** 3 * 0.01 / 0.2e-3, rel=1e-12)
@@ -95,7 +95,7 @@ def test_land_friction_is_the_short_journal_shear_and_closes_the_balance():
                                          (dict(land_width=5e-3, guidance="balls"), "land_width"),
                                          (dict(land_radius=0.0), "land_radius")])
 def test_bad_cage_land_input_names_the_key(kwargs, key):
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     with pytest.raises(ValueError, match=key):
         CageModel(**kwargs)
@@ -103,7 +103,7 @@ def test_bad_cage_land_input_names_the_key(kwargs, key):
 
 def test_land_play_beyond_the_annulus_names_the_key():
     """The 35-mm bearing's 7.144-mm balls leave no room for 2 mm of diametral land play."""
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     with pytest.raises(ValueError, match="guide_clearance"):
         simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial=667.0, rpm=28000.0, time=0.001,
@@ -183,7 +183,7 @@ def test_pocket_friction_steady_and_dynamic_agree_and_close_the_balance():
     drive power equals the total loss within 1 %, the friction adds to the cage loss, and the
     steady kinematic slip rises with mu (the friction resists the balls' spin)."""
     from exudyn_bearing import steady_state
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     slips = [steady_state(axial=1300.0, rpm=1800.0, cage=CageModel(land_width=0.01, pocket_friction=mu))
              .kinematic_cage_slip_percent for mu in (0.0, 0.1, 0.3)]
@@ -202,7 +202,7 @@ def test_pocket_friction_steady_and_dynamic_agree_and_close_the_balance():
                                          (dict(kind="spring-chain", pocket_friction=0.1), "pocket_friction"),
                                          (dict(pocket_slip_scale=0.0), "pocket_slip_scale")])
 def test_bad_pocket_friction_input_names_the_key(kwargs, key):
-    from exudyn_bearing.connector import CageModel
+    from exudyn_bearing.cage import CageModel
 
     with pytest.raises(ValueError, match=key):
         CageModel(**kwargs)

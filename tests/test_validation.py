@@ -18,7 +18,7 @@ from contact.lubricant import REFERENCE_LUBRICANT, Lubricant
 from exudyn_bearing import races
 from exudyn_bearing.bearing import BallDrag, Bearing, Material
 from exudyn_bearing.bearingfile import loads_bearing
-from exudyn_bearing.connector import CageModel
+from exudyn_bearing.cage import CageModel
 from exudyn_bearing.presets import REFERENCE_BEARING
 from exudyn_bearing.quasistatic import solve_load_distribution
 from exudyn_bearing.shaft import ShaftBearing, solve_shaft

@@ -1,0 +1,125 @@
+"""The cage of a bearing model (MODEL.md §1, §11d): how it is modelled, guided and loaded.
+The forces themselves are :mod:`contact.cage`'s; :class:`~exudyn_bearing.connector.BearingConnector`
+applies them."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contact import cage as cage_physics
+from .bearing import Bearing
+
+__all__ = ["CageModel"]
+
+
+@dataclass(frozen=True)
+class CageModel:
+    """Ball–cage interaction (MODEL.md §1).
+
+    Parameters
+    ----------
+    kind : {'rigid', 'spring-chain', 'none'}
+        A rigid cage body with Z pockets, the paper's springs between neighbouring balls
+        (P9, P10), or no cage at all.
+    stiffness : float
+        Pocket (or chain spring) stiffness, N/m (paper: 1e8).
+    damping : float or None
+        N s/m; None: 5 % of critical for a ball on the pocket stiffness.
+    clearance : float
+        Circumferential pocket play, m (rigid cage).
+    mass : float or None
+        Cage mass, kg; None: a brass ring of width D and thickness 0.3 D, half of it
+        pockets.
+    guidance : {'outer', 'inner', 'balls'}
+        Rigid cage: what centres it radially. 'outer'/'inner': the cage ring runs in that
+        race's guiding land with diametral play ``guide_clearance`` (contact stiffness
+        ``guide_stiffness``, damping ``guide_damping``; radial force through the centres,
+        no land friction). 'balls': only the pockets hold it; the ring can then drift
+        radially without bound — at medium axial loads (0.7–1 kN at 1800 rpm) the skidding
+        balls drive a growing whirl that reaches millimetres by 0.5 s and wrecks the run.
+    guide_clearance : float
+        Diametral land play, m (default 0.4 mm: an assumed, typical order for a 155 mm
+        pitch diameter; the paper has no cage body).
+    guide_stiffness : float
+        Land contact stiffness, N/m.
+    guide_damping : float or None
+        N s/m; None: 20 % of critical for the cage mass on ``guide_stiffness``.
+    land_width : float
+        Axial width L of the guiding land, m; > 0 adds the oil film's friction torque between
+        cage and land (MODEL.md §11d: the short-journal shear torque
+        2 π η0 R³ L (w_race - w_cage) / (c √(1 - ε²))). 0 (default): no land friction.
+    land_radius : float or None
+        Radius R of the guiding land, m; None: r_p + D/2 (outer guidance) or r_p - D/2 (inner),
+        the land at the balls' edge.
+    pocket_friction : float
+        Sliding friction coefficient mu at the ball–pocket contacts (rigid cage; MODEL.md
+        §11d: regularized Coulomb at the contact point, so it resists the balls' spin and
+        drags the cage). 0 (default): frictionless pockets, as the paper.
+    pocket_slip_scale : float
+        Slip speed v_s, m/s, below which the pocket friction is viscous (mu N v / v_s).
+    """
+
+    kind: str = "rigid"
+    stiffness: float = 1e8
+    damping: float | None = None
+    clearance: float = 0.0
+    mass: float | None = None
+    guidance: str = "outer"
+    guide_clearance: float = 0.4e-3
+    guide_stiffness: float = 1e7
+    guide_damping: float | None = None
+    land_width: float = 0.0
+    land_radius: float | None = None
+    pocket_friction: float = 0.0
+    pocket_slip_scale: float = 0.01
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("rigid", "spring-chain", "none"):
+            raise ValueError(f"kind must be 'rigid', 'spring-chain' or 'none', got {self.kind!r}")
+        if self.guidance not in ("outer", "inner", "balls"):
+            raise ValueError(f"guidance must be 'outer', 'inner' or 'balls', got {self.guidance!r}")
+        for name in ("stiffness", "clearance", "guide_clearance", "guide_stiffness", "land_width", "pocket_friction"):
+            value = getattr(self, name)
+            if not (np.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
+        for name in ("damping", "guide_damping"):
+            value = getattr(self, name)
+            if value is not None and not (np.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} must be finite and >= 0, got {value!r}")
+        if self.mass is not None and not (np.isfinite(self.mass) and self.mass > 0):
+            raise ValueError(f"mass must be positive, got {self.mass!r}")
+        if self.land_radius is not None and not (np.isfinite(self.land_radius) and self.land_radius > 0):
+            raise ValueError(f"land_radius must be positive, got {self.land_radius!r}")
+        if self.land_width > 0 and (self.kind != "rigid" or self.guidance == "balls"):
+            raise ValueError("land_width: land friction needs a rigid cage guided by a race land "
+                             "(kind='rigid', guidance='inner' or 'outer')")
+        if not (np.isfinite(self.pocket_slip_scale) and self.pocket_slip_scale > 0):
+            raise ValueError(f"pocket_slip_scale must be positive, got {self.pocket_slip_scale!r}")
+        if self.pocket_friction > 0 and self.kind != "rigid":
+            raise ValueError("pocket_friction: pocket friction needs a rigid cage (kind='rigid')")
+        if self.land_width > 0 and self.guide_clearance <= 0:
+            raise ValueError("land_width: the land friction needs a guide_clearance > 0 (its oil film)")
+
+    def land_friction_constant(self, bearing, lubricant) -> float:
+        """K = 2 π η0 R³ L / c of the guiding land's friction torque K (w_land - w_cage) /
+        √(1 - ε²), N m s (MODEL.md §11d); 0 without land friction."""
+        if self.land_width <= 0 or not self.guided:
+            return 0.0
+        side = 1.0 if self.guidance == "outer" else -1.0
+        radius = self.land_radius or bearing.pitch_radius + side * bearing.ball_radius
+        return float(cage_physics.land_friction_constant(lubricant.viscosity, radius, self.land_width,
+                                                         0.5 * self.guide_clearance))
+
+    def damping_for(self, ball_mass: float) -> float:
+        return 2 * 0.05 * np.sqrt(self.stiffness * ball_mass) if self.damping is None else self.damping
+
+    def mass_for(self, bearing: Bearing) -> float:
+        """Cage mass, kg (``mass`` or the default brass ring)."""
+        d = bearing.ball_diameter
+        return self.mass or 8500.0 * 2 * np.pi * bearing.pitch_radius * (0.3 * d) * d * 0.5
+
+    @property
+    def guided(self) -> bool:
+        """A rigid cage centred by a race land."""
+        return self.kind == "rigid" and self.guidance != "balls"
