@@ -17,7 +17,7 @@ UNITS = {
     "max_inner_slip": "m/s", "peak_ball_slip": "m/s",
     "inner_max_pressure": "Pa", "outer_max_pressure": "Pa",
     "inner_race_shift": "m", "ball_orbit_radius": "m", "ball_axial_position": "m",
-    "absolute_tolerance": "-", "relative_tolerance": "-", "reference_step": "s",
+    "absolute_tolerance": "N", "relative_tolerance": "-", "reference_step": "s",
     "minimum_axial": "N", "bracket": "N", "dynamic_minimum_axial": "N", "dynamic_slips": "%",
     "hirano_minimum_axial": "N", "gyroscopic_minimum_axial": "N",
 }
