@@ -29,6 +29,7 @@ import numpy as np
 from contact import geometry
 from contact.hertz import effective_ball_stiffness
 from .bearing import Bearing
+from .records import units_of
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
 
@@ -37,14 +38,6 @@ class QuasiStaticError(RuntimeError):
     """The Newton–Raphson load-distribution solve did not converge."""
 
 
-#: units of :meth:`LoadDistribution.to_dict`'s keys ('-': none)
-LOAD_DISTRIBUTION_UNITS = {
-    "azimuth": "rad", "inner_load": "N", "outer_load": "N", "inner_contact_angle": "rad",
-    "outer_contact_angle": "rad", "inner_deflection": "m", "outer_deflection": "m", "ball_radius_offset": "m",
-    "ball_axial_offset": "m", "displacement": "m", "tilt": "rad", "reaction_moment": "N m",
-    "centrifugal_force": "N", "cage_speed": "rad/s", "cage_force": "N", "race_force": "N", "race_moment": "N m",
-    "axial_displacement": "m", "radial_displacement": "m",
-}
 
 
 @dataclass(frozen=True)
@@ -88,7 +81,7 @@ class LoadDistribution:
             out[f"{name}_deg"] = np.degrees(getattr(self, name)).tolist()
         dx, dy, dz = self.displacement
         out["axial_displacement"], out["radial_displacement"] = float(dz), float(math.hypot(dx, dy))
-        out["units"] = {k: LOAD_DISTRIBUTION_UNITS.get(k, "deg" if k.endswith("_deg") else "-") for k in out}
+        out["units"] = units_of(out)
         return out
 
 

@@ -20,6 +20,11 @@ UNITS = {
     "absolute_tolerance": "N", "relative_tolerance": "-", "reference_step": "s",
     "minimum_axial": "N", "bracket": "N", "dynamic_minimum_axial": "N", "dynamic_slips": "%",
     "hirano_minimum_axial": "N", "gyroscopic_minimum_axial": "N",
+    # the quasi-static load distribution (LoadDistribution.to_dict)
+    "azimuth": "rad", "inner_contact_angle": "rad", "outer_contact_angle": "rad", "inner_deflection": "m",
+    "outer_deflection": "m", "ball_radius_offset": "m", "ball_axial_offset": "m", "displacement": "m", "tilt": "rad",
+    "reaction_moment": "N m", "centrifugal_force": "N", "cage_force": "N", "race_force": "N", "race_moment": "N m",
+    "axial_displacement": "m", "radial_displacement": "m",
 }
 
 #: unit suffixes of result names
