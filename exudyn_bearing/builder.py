@@ -28,6 +28,7 @@ from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
 from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_state, race_adapter,
                     ring_inertia)
+from .quasidynamic import AzimuthStates
 from .start import choose_inner_control, jones_axis_start, raceway_control, steady_start
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
@@ -57,6 +58,9 @@ class BearingHandle:
     initialLoads: object = field(repr=False, default=None)
     #: the :class:`~exudyn_bearing.steady.SteadyState` the run starts from, or None (pure-rolling start)
     initialSteadyState: object = field(repr=False, default=None)
+    #: under combined load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` the run
+    #: starts from, or None
+    initialQuasiDynamicState: object = field(repr=False, default=None)
 
     def Inputs(self, **settings) -> dict:
         """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,
@@ -207,9 +211,13 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         'steady': every ball, the cage and the inner race start in the steady rolling state
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
         the balance of traction, spin, drag, centrifugal and gyroscopic forces, MODEL.md
-        §12), so a run does not spend seconds of simulated time settling. 'rolling': the
-        quasi-static position with pure-rolling speeds (see Notes). 'auto' (default):
-        'steady' where it applies (axial force only, ``Driven``/``Free`` inner race, no
+        §12), so a run does not spend seconds of simulated time settling; under combined
+        load, where the axial load alone skids, every ball in its own quasi-dynamic balance
+        at one cage speed (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md
+        §12a; its continuation costs seconds: 400 N + 300 N radial on the reference bearing
+        ~22 s, after which the run holds its cage speed instead of drifting for seconds).
+        'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
+        (default): 'steady' for an axial force alone (``Driven``/``Free`` inner race, no
         ``innerRaceDisplacement``, the steady solve converged), else 'rolling'.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
@@ -308,8 +316,15 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     steady = steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
                            sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
                            contactLaw=contactLaw, ballDrag=ballDrag, cage=cage)
+    e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
+    quasi = None
+    if isinstance(steady, AzimuthStates):  # combined load: each ball in its own balance, one cage speed
+        quasi, steady = steady, None
+        c_loc = quasi.orbit_radius[:, None] * e_r + quasi.axial_position[:, None] * e_z
+        w_c = np.full(z, quasi.cage_speed)
+        omega_loc = quasi.omega[:, :1] * e_r + quasi.omega[:, 1:2] * e_psi + quasi.omega[:, 2:] * e_z
+        relative[:3] = quasi.displacement
     if steady is not None:
-        e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
         c_loc = steady.ball_orbit_radius * e_r + steady.ball_axial_position * e_z
         w_c = np.full(z, sense * steady.cage_speed)
         # a reversed bearing is the mirror image in the meridional plane: the pseudovector
@@ -408,4 +423,4 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         sensor = mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
-                         connector, nodes, loads, steady)
+                         connector, nodes, loads, steady, quasi)

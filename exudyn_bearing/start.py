@@ -8,30 +8,56 @@ import numpy as np
 __all__ = ["raceway_control"]
 
 
+#: under combined load the quasi-dynamic start (MODEL.md §12a) is taken where the axial load
+#: alone skids more than this, kinematic cage slip in %: below it a pure-rolling start settles
+#: within tens of milliseconds anyway (docs/DEVELOPMENT.md §15), and the start's solve costs
+#: seconds
+SKIDDING_START_PERCENT = 1.0
+
+
 def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
                  contactLaw, ballDrag, cage=None):
-    """The :class:`~exudyn_bearing.steady.SteadyState` to start from, or None for the
-    pure-rolling start ('rolling', or 'auto' where the steady state does not apply). Loads
+    """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
+    pure axial load ('auto' and 'steady'), the :class:`~exudyn_bearing.quasidynamic.AzimuthStates`
+    under combined load where the axial load alone skids (:data:`SKIDDING_START_PERCENT`;
+    'steady' only: its continuation costs seconds), or None for the pure-rolling start
+    ('rolling', or 'auto' where the steady state does not apply or converge). Loads
     given as functions of time start from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
     if initial_state == "rolling":
         return None
     why = None
-    if radial != 0 or axial <= 0:
-        why = "it needs an axial force alone (radial = 0, axial > 0)"
+    if axial <= 0:
+        why = "it needs an axial force > 0"
     elif inner.kind not in ("driven", "free") or displaced:
         why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
         why = "the races turn at the same speed"
+    elif radial != 0 and sense < 0:
+        why = "under radial load it needs a positive inner-race speed"
     if why is None:
         from .steady import steady_state
 
         state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
                              drag=ballDrag, contact_law=contactLaw, cage=cage)
-        if state.converged:
+        if not state.converged:
+            why = state.message
+        elif radial == 0:
             return state
-        why = state.message
+        elif initial_state == "auto":  # combined load: the quasi-dynamic start costs seconds; opt in
+            return None
+        elif state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT:
+            why = (f"under radial load it applies where the axial load alone skids (kinematic cage slip "
+                   f"{state.kinematic_cage_slip_percent:.2f} % <= {SKIDDING_START_PERCENT:g} %)")
+        else:
+            from .quasidynamic import combined_load_state
+
+            combined = combined_load_state(bearing, lubricant, axial=axial, radial=radial, rpm=rpm_i, outer_rpm=rpm_o,
+                                           drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state)
+            if combined.converged:
+                return combined
+            why = combined.message
     if initial_state == "steady":
         raise ValueError(f"initialState: no steady start here, {why}; use initialState='rolling'")
     return None

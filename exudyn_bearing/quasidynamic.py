@@ -1,0 +1,209 @@
+"""Quasi-dynamic state under combined load, the start of radially loaded runs (MODEL.md §12a).
+
+Every ball is in its own force and moment balance at its azimuth (normal, traction, spin,
+drag, centrifugal and gyroscopic, with the dynamic model's contact functions); all balls
+orbit at one cage speed, the pockets taking the difference as a circumferential force P_j;
+the cage is in torque balance (sum_j P_j r_cj = the land's friction torque) and the inner
+race in force balance with the applied load. Unknowns: per ball P_j, its angular velocity
+and its centre (r_cj, z_cj) in its azimuth plane, the cage speed and the inner race's
+displacement (6 Z + 4); each ball's equations depend on its own unknowns, the cage speed and
+the race only, so the Jacobian is differenced in 6 + 4 evaluations.
+
+Light radial loads on a skidding bearing have several balances; the one the dynamic model
+settles near is reached by continuation in the radial load from the axial steady state
+(:func:`exudyn_bearing.steady_state`), in steps of at most a tenth of the axial load
+(docs/DEVELOPMENT.md §15).
+"""
+from __future__ import annotations
+
+import math
+import time as _time
+from dataclasses import dataclass, replace
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from contact import cage as cage_physics
+from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
+from contact.kinematics import ball_race_kinematics
+
+__all__ = ["AzimuthStates", "combined_load_state"]
+
+MICRON = 1e-6
+_E_Z = np.array([0.0, 0.0, 1.0])
+
+
+@dataclass(frozen=True)
+class AzimuthStates:
+    """Result of :func:`combined_load_state` (SI units; per-ball arrays in each ball's azimuth
+    frame: x radial, y circumferential, z axial)."""
+
+    cage_speed: float  #: common orbital speed w_c, rad/s
+    azimuth: np.ndarray  #: psi_j, rad
+    orbit_radius: np.ndarray  #: r_cj, m
+    axial_position: np.ndarray  #: z_cj, m
+    omega: np.ndarray  #: (Z, 3) absolute ball angular velocities, rad/s
+    pocket_force: np.ndarray  #: P_j, circumferential force of its pocket on each ball, N
+    displacement: np.ndarray  #: inner race displacement (x, y, z), bearing frame, m
+    residual: float  #: largest scaled equation residual
+    converged: bool
+    message: str
+    wall_time_s: float
+
+
+class _Balance:
+    """The balance equations of all balls, the cage and the inner race, vectorized."""
+
+    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial):
+        z = bearing.balls
+        self.b, self.lub, self.law, self.z = bearing, lubricant, law, z
+        self.land, self.applied = land, np.array([radial, 0.0, axial])
+        self.psi = 2.0 * np.pi * np.arange(z) / z
+        self.e_r = np.stack([np.cos(self.psi), np.sin(self.psi), np.zeros(z)], axis=1)
+        self.e_p = np.stack([-np.sin(self.psi), np.cos(self.psi), np.zeros(z)], axis=1)
+        self.race_omega = np.concatenate([np.tile(w_i * _E_Z, (z, 1)), np.tile(w_o * _E_Z, (z, 1))])
+        (r_gi, z_gi), (r_go, z_go) = bearing.groove_centres()
+        d = bearing.ball_diameter
+        self.tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
+        self.grooves = (np.repeat([r_gi, r_go], z), np.repeat([z_gi, z_go], z), np.repeat(self.tube, z))
+        self.signs = np.repeat([-1.0, 1.0], z)
+        self.params = RaceContact(d, bearing.pitch_diameter,
+                                  np.repeat([bearing.inner_conformity, bearing.outer_conformity], z), self.signs,
+                                  bearing.effective_modulus, bearing.ball_mass)
+        self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
+        self.c_d = 0.0 if drag is None else drag.drag_coefficient
+        self.inertia = 0.4 * bearing.ball_mass * bearing.ball_radius ** 2
+        self.force_scale = max(axial, abs(radial), 1e-3) / (z * max(math.sin(bearing.contact_angle), 0.1))
+        w_scale = abs(w_i - w_o) * bearing.pitch_diameter / d / 2 or 1.0
+        self.scale = np.concatenate([np.tile([self.force_scale, w_scale, w_scale, w_scale, MICRON, MICRON], z),
+                                     [abs(bearing.cage_speed(w_i, w_o)) or 1.0], [MICRON] * 3])
+        self.w_bounds = sorted((w_i, w_o))
+
+    def unpack(self, x):
+        """(P (Z,), w_b (Z, 3), centres (Z, 3), w_c, race displacement (3,)) of the scaled unknowns."""
+        y = x * self.scale
+        per = y[:6 * self.z].reshape(self.z, 6)
+        centre = np.stack([self.b.pitch_radius + per[:, 4], np.zeros(self.z), per[:, 5]], axis=1)
+        return per[:, 0], per[:, 1:4], centre, y[6 * self.z], y[-3:]
+
+    def parts(self, x):
+        """Scaled per-ball forces and moments (Z, 3 each), the cage's torque and each ball's
+        share of the inner race's force balance (Z, 3), bearing frame."""
+        pocket, w_b, c, w_c, d = self.unpack(x)
+        z = self.z
+        inner_origin = np.stack([self.e_r @ d, self.e_p @ d, np.full(z, d[2])], axis=1)
+        origin = np.concatenate([inner_origin, np.zeros((z, 3))])
+        both = np.concatenate([c, c])
+        v = np.stack([np.zeros(2 * z), w_c * both[:, 0], np.zeros(2 * z)], axis=1)
+        kin = ball_race_kinematics(both, v, np.concatenate([w_b, w_b]), origin, np.eye(3), np.zeros(3),
+                                   self.race_omega, self.grooves, self.b.ball_radius, self.signs)
+        f = ball_race_forces(kin, self.params, self.lub, self.law)
+        force = f.force[:z] + f.force[z:]
+        force[:, 0] += self.b.ball_mass * c[:, 0] * w_c ** 2
+        force[:, 1] += pocket
+        if self.density > 0:
+            force += cage_physics.drag_forces(c, v[:z], _E_Z, np.zeros(3), self.c_d, self.density, self.b.ball_radius)
+        moment = f.moment[:z] + f.moment[z:] - self.inertia * w_c * np.cross(_E_Z, w_b)
+        s = self.force_scale
+        torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * c[:, 0]))
+        fi = f.force[:z]  # the inner race takes minus each ball's inner contact force
+        race = -(fi[:, :1] * self.e_r + fi[:, 1:2] * self.e_p + fi[:, 2:] * _E_Z)
+        return force / s, moment / (s * self.b.ball_radius), torque / (s * self.b.pitch_radius), race / s
+
+    def residual(self, x):
+        force, moment, torque, race = self.parts(x)
+        return np.concatenate([np.concatenate([force, moment], axis=1).ravel(), [torque],
+                               race.sum(axis=0) + self.applied / self.force_scale])
+
+    def jacobian(self, x, step=1e-6):
+        """Per-ball blocks (and their shares of the race rows) from one perturbation of the
+        same unknown of every ball; the cage speed and race columns one at a time; the cage
+        torque row exact."""
+        z, n = self.z, 6 * self.z + 4
+        f0, m0, _, r0 = self.parts(x)
+        jac = np.zeros((n, n))
+        rows = np.arange(6 * z).reshape(z, 6)
+        race_rows = np.arange(6 * z + 1, n)
+        for k in range(6):
+            xk = x.copy()
+            xk[k:6 * z:6] += step
+            f, m, _, r = self.parts(xk)
+            d = np.concatenate([f - f0, m - m0], axis=1) / step
+            for i in range(6):
+                jac[rows[:, i], rows[:, k]] = d[:, i]
+            jac[race_rows[:, None], rows[:, k][None, :]] = ((r - r0) / step).T
+        base = self.residual(x)
+        for col in range(6 * z, n):
+            xc = x.copy()
+            xc[col] += step
+            jac[:, col] = (self.residual(xc) - base) / step
+        pocket, _, c, _, _ = self.unpack(x)
+        norm = self.force_scale * self.b.pitch_radius
+        jac[6 * z] = 0.0
+        jac[6 * z, 0:6 * z:6] = -c[:, 0] * self.force_scale / norm
+        jac[6 * z, 4:6 * z:6] = -pocket * MICRON / norm
+        jac[6 * z, 6 * z] = -self.land[0] * self.scale[6 * z] / norm
+        return jac
+
+    def bounds(self):
+        play = 1e6 * (self.tube[0] + self.tube[1])  # um
+        w = self.w_bounds
+        lo = np.concatenate([np.tile([-np.inf, -3.0, -3.0, -3.0, -play, -play], self.z),
+                             [w[0] / self.scale[6 * self.z] - 1e-3], [-np.inf] * 3])
+        hi = np.concatenate([np.tile([np.inf, 3.0, 3.0, 3.0, play, play], self.z),
+                             [w[1] / self.scale[6 * self.z] + 1e-3], [np.inf] * 3])
+        return lo, hi
+
+
+def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
+                        drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
+                        tol: float = 1e-8) -> AzimuthStates:
+    """The quasi-dynamic state under ``axial`` + ``radial`` load (N; radial along the bearing
+    frame's x axis), continued in radial load from the axial steady state ``steady``
+    (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds; solved
+    here if None) in steps of at most a tenth of the axial load, halved where a step does
+    not converge (module docstring, MODEL.md §12a). ``converged`` False with a ``message``
+    where the continuation stalls; its numbers must then not be used."""
+    from .steady import steady_state
+
+    start = _time.perf_counter()
+    if steady is None:
+        steady = steady_state(bearing, lubricant, axial=axial, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
+                              contact_law=contact_law, cage=cage)
+    law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
+    w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    land = (0.0, 0.0)
+    friction = 0.0 if cage is None else cage.land_friction_constant(bearing, lubricant)
+    if friction > 0:
+        land = (friction, w_o if cage.guidance == "outer" else w_i)
+    z = bearing.balls
+    y = np.zeros(6 * z + 4)
+    per = y[:6 * z].reshape(z, 6)
+    per[:, 1:4] = np.asarray(steady.ball_omega)
+    per[:, 4] = steady.ball_orbit_radius - bearing.pitch_radius
+    per[:, 5] = steady.ball_axial_position
+    y[6 * z] = steady.cage_speed
+    y[-1] = steady.inner_race_shift
+    done, step, worst, balance = 0.0, min(abs(radial), max(0.1 * axial, 1e-3 * abs(radial))), 0.0, None
+    message = "converged"
+    while done < abs(radial):
+        target = min(done + step, abs(radial))
+        balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, math.copysign(target, radial))
+        lo, hi = balance.bounds()
+        sol = least_squares(balance.residual, np.clip(y / balance.scale, lo, hi), jac=balance.jacobian, method="trf",
+                            bounds=(lo, hi), xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=100)
+        worst = float(np.max(np.abs(sol.fun)))
+        if worst <= tol and not np.any(sol.active_mask != 0):
+            y, done = sol.x * balance.scale, target
+            continue
+        step *= 0.5
+        if step < 0.01 * axial:
+            message = (f"no quasi-dynamic balance found beyond {done:g} N radial (largest scaled residual "
+                       f"{worst:.2g} at {target:g} N)")
+            break
+    converged = done >= abs(radial)
+    if balance is None:  # no radial load: the steady state itself
+        balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, 0.0)
+    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
+    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
+                         d.copy(), worst, converged, message, _time.perf_counter() - start)
