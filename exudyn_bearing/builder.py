@@ -215,7 +215,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         load, where the axial load alone skids, every ball in its own quasi-dynamic balance
         at one cage speed (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md
         §12a; its continuation costs seconds: 400 N + 300 N radial on the reference bearing
-        ~22 s, after which the run holds its cage speed instead of drifting for seconds).
+        ~11 s, after which the run holds its cage speed instead of drifting for seconds).
         'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
         (default): 'steady' for an axial force alone (``Driven``/``Free`` inner race, no
         ``innerRaceDisplacement``, the steady solve converged), else 'rolling'.
