@@ -75,7 +75,7 @@ def _simulate(args) -> int:
     summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, drag=None if args.no_drag else setup.drag, cage=setup.cage,
                        contact_law=_law(args, quadrature_order=args.order),
-                       error_estimate=args.error_estimate)
+                       error_estimate=args.error_estimate, initial_state=args.start)
     data = summary.to_dict()
     if args.plot:
         from .plots import plot_run
@@ -281,6 +281,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")
+    p.add_argument("--start", choices=("auto", "steady", "rolling"), default="auto",
+                   help="start state: steady (axial: the steady state; combined load: every ball's own balance, "
+                        "MODEL.md §12a), rolling (pure rolling), auto (steady for an axial load alone)")
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
     p.set_defaults(func=_simulate)
     p = sub.add_parser("steady", help="steady rolling state under pure axial load, no time integration (MODEL.md §12)")

@@ -55,3 +55,20 @@ def test_auto_keeps_the_rolling_start_under_combined_load():
     with pytest.raises(ValueError, match="skids"):
         CreateAngularContactBearing(exu.SystemContainer().AddSystem(), axialForce=2200.0, radialForce=2000.0,
                                     initialState="steady", show=False)
+
+
+def test_cli_start_flag_takes_the_combined_start(tmp_path):
+    """`simulate --start steady` under combined load starts from the quasi-dynamic state (the
+    cage speed of the Python API's start) and records it in the result's inputs."""
+    import json
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--axial", "400", "--radial", "100",
+                          "--time", "0.002", "--start", "steady", "--json"], capture_output=True, text=True,
+                         cwd=tmp_path, timeout=600)
+    assert out.returncode == 0, out.stderr[-2000:]
+    data = json.loads(out.stdout)
+    assert data["inputs"]["initial_state"] == "'steady'"
+    state = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=100.0, rpm=1800.0, drag=REFERENCE_DRAG)
+    assert data["cage_speed"] == pytest.approx(state.cage_speed, rel=2e-3)
