@@ -25,8 +25,8 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
     given as functions of time start from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
-    if initial_state == "rolling":
-        return None
+    if initial_state == "rolling" or (initial_state == "auto" and radial != 0):
+        return None  # combined load: the quasi-dynamic start costs seconds; opt in with 'steady'
     why = None
     if axial <= 0:
         why = "it needs an axial force > 0"
@@ -45,8 +45,6 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
             why = state.message
         elif radial == 0:
             return state
-        elif initial_state == "auto":  # combined load: the quasi-dynamic start costs seconds; opt in
-            return None
         elif state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT:
             why = (f"under radial load it applies where the axial load alone skids (kinematic cage slip "
                    f"{state.kinematic_cage_slip_percent:.2f} % <= {SKIDDING_START_PERCENT:g} %)")
