@@ -49,6 +49,8 @@ class ConnectorState:
     cage_velocity: np.ndarray = None  #: its velocity, (3,), m/s
     pocket_friction_force: np.ndarray = None  #: pocket friction on each ball, (Z, 3), N (None: off)
     pocket_friction_loss: float = 0.0  #: power the pocket friction dissipates, W
+    land_friction_loss: float = 0.0  #: power the guiding land's oil film dissipates, W
+    land_drive_power: float = 0.0  #: power the guiding race puts into the cage through that film, W
 
 
 def _take(record, part):
@@ -249,7 +251,7 @@ class BearingConnector:
         return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
                               cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
                               race_omega["inner"][0], race_omega["outer"][0],
-                              self.rotation, self.origin, out.ravel(), *self._land_details(t, pos, rot, vel, omega),
+                              self.rotation, self.origin, out.ravel(), **self._land_details(t, pos, rot, vel, omega),
                               cage_position=pos[cage_slot] if self.cage.kind == "rigid" else None,
                               cage_velocity=vel[cage_slot] if self.cage.kind == "rigid" else None,
                               pocket_friction_force=None if friction is None else friction[0][0],
@@ -319,28 +321,25 @@ class BearingConnector:
                                          damping)
         return force, slot, np.linalg.norm(cage_physics.radial_offset(pos[:, s], origin, rotation[..., 2]), axis=-1)
 
-    def _land_details(self, t, pos, rot, vel, omega):
-        """(cage eccentricity m, land force (3,) N or None) of one state for
-        :class:`ConnectorState`; an unguided rigid cage's eccentricity is measured from the
-        outer race axis."""
+    def _land_details(self, t, pos, rot, vel, omega) -> dict:
+        """The :class:`ConnectorState` fields of the cage's land for one state: eccentricity
+        (m; an unguided rigid cage's from the outer race axis), land force ((3,) N or None)
+        and, with land friction, the power its film dissipates, T (w_race - w_cage), and the
+        power its race puts in through it, T w_race (W)."""
         if self.guide is None:
             if self.cage.kind != "rigid":
-                return 0.0, None
+                return {}
             origin, rotation, _, _, _ = self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])
-            return float(np.linalg.norm(cage_physics.radial_offset(pos[self.layout["cage"]], origin[0],
-                                                                   rotation[0, :, 2]))), None
+            return dict(cage_eccentricity=float(np.linalg.norm(cage_physics.radial_offset(
+                pos[self.layout["cage"]], origin[0], rotation[0, :, 2]))))
         force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
-        return float(e[0]), force[0]
-
-    def land_friction_power(self, t, pos, rot, vel, omega) -> tuple:
-        """(power the guiding land's friction dissipates, power its race puts in through it),
-        W, of one state ((0, 0) without land friction): T (w_race - w_cage) and T w_race."""
-        if self.guide is None or self.guide[4] <= 0:
-            return 0.0, 0.0
-        _, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
-        torque, axis, w_land = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
-        slip = float(w_land[0]) - float(omega[self.layout["cage"]] @ axis[0])
-        return float(torque[0]) * slip, float(torque[0]) * float(w_land[0])
+        details = dict(cage_eccentricity=float(e[0]), cage_land_force=force[0])
+        if self.guide[4] > 0:
+            torque, axis, w_land = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
+            slip = float(w_land[0]) - float(omega[self.layout["cage"]] @ axis[0])
+            details.update(land_friction_loss=float(torque[0]) * slip,
+                           land_drive_power=float(torque[0]) * float(w_land[0]))
+        return details
 
     def land_torque(self, t, pos, rot, vel, omega, eccentricity):
         """Friction torque of the guiding land's oil film on the cage about the race axis,

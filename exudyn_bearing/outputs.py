@@ -228,11 +228,7 @@ def compute_results(handle, time, q, q_t) -> BearingResults:
         outer_moment[k] = -np.sum(cross(s.ball_position - origin, s.outer_forces.force) + s.outer_forces.moment,
                                   axis=0) @ frame
         losses[k] = _body_losses(s)
-        if con.guide is not None and con.guide[4] > 0:
-            pos, rot, vel, wl = con.decode(q[k], q_t[k])
-            lost, put_in = con.land_friction_power(time[k], pos, rot, vel, np.einsum("nij,nj->ni", rot, wl))
-            losses[k, 2] += lost
-            land_drive[k] = put_in
+        land_drive[k] = s.land_drive_power
         for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
             race_force[race][k] = -f.force.sum(axis=0) @ frame
             c = contacts[race]
@@ -267,8 +263,8 @@ def _body_losses(s) -> tuple:
         v_pocket = s.cage_velocity + cross(s.cage_omega, s.ball_position - s.cage_position)
         # + the pocket friction's, -F_f . v_t at the contact points (MODEL.md §11d)
         pocket = -float(np.sum(s.cage_force * (s.ball_velocity - v_pocket))) + s.pocket_friction_loss
-        if s.cage_land_force is not None:
-            land = -float(s.cage_land_force @ s.cage_velocity)
+        if s.cage_land_force is not None:  # its contact, and its film's friction (MODEL.md §11d)
+            land = -float(s.cage_land_force @ s.cage_velocity) + s.land_friction_loss
     elif s.cage_force is not None:
         pocket = -float(np.sum(s.cage_force * s.ball_velocity))  # spring chain: balls only
     return drag, pocket, land
