@@ -111,6 +111,15 @@ class CageModel:
         return float(cage_physics.land_friction_constant(lubricant.viscosity, radius, self.land_width,
                                                          0.5 * self.guide_clearance))
 
+    def centred_land_load(self, bearing, lubricant, inner_speed: float, outer_speed: float) -> tuple:
+        """(K of :meth:`land_friction_constant`, the guiding race's speed rad/s) for the
+        steady and quasi-dynamic solvers, whose centred cage takes the land torque
+        K (w_land - w_cage); (0, 0) without land friction."""
+        friction = self.land_friction_constant(bearing, lubricant)
+        if friction <= 0:
+            return 0.0, 0.0
+        return friction, outer_speed if self.guidance == "outer" else inner_speed
+
     def damping_for(self, ball_mass: float) -> float:
         return 2 * 0.05 * np.sqrt(self.stiffness * ball_mass) if self.damping is None else self.damping
 

@@ -174,10 +174,7 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     # speed to 2e-5 (400 N + 300 N: 46.149 / 46.150 rad/s) at 60 % of its cost
     law = replace(contact_law, fast_quadrature=False, quadrature_order=8)
     w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
-    land = (0.0, 0.0)
-    friction = 0.0 if cage is None else cage.land_friction_constant(bearing, lubricant)
-    if friction > 0:
-        land = (friction, w_o if cage.guidance == "outer" else w_i)
+    land = (0.0, 0.0) if cage is None else cage.centred_land_load(bearing, lubricant, w_i, w_o)
     z = bearing.balls
     y = np.zeros(6 * z + 4)
     per = y[:6 * z].reshape(z, 6)

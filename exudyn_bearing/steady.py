@@ -229,10 +229,7 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     # the accurate traction rule: the fast rule's ray switching is not smooth enough for a
     # root finder to converge below ~1e-3, while the two rules agree within 1e-2 (MODEL.md §6)
     law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
-    land = (0.0, 0.0)
-    friction = 0.0 if cage is None else cage.land_friction_constant(bearing, lubricant)
-    if friction > 0:
-        land = (friction, w_o if cage.guidance == "outer" else w_i)
+    land = (0.0, 0.0) if cage is None else cage.centred_land_load(bearing, lubricant, w_i, w_o)
     pocket = (0.0, 0.01) if cage is None else (cage.pocket_friction, cage.pocket_slip_scale)
     ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land, pocket)
     lo, hi = ball.bounds()
