@@ -24,8 +24,9 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from contact import cage as cage_physics
-from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
+from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
+from .steady import contact_constants, steady_state
 
 __all__ = ["AzimuthStates", "combined_load_state"]
 
@@ -62,17 +63,11 @@ class _Balance:
         self.e_r = np.stack([np.cos(self.psi), np.sin(self.psi), np.zeros(z)], axis=1)
         self.e_p = np.stack([-np.sin(self.psi), np.cos(self.psi), np.zeros(z)], axis=1)
         self.race_omega = np.concatenate([np.tile(w_i * _E_Z, (z, 1)), np.tile(w_o * _E_Z, (z, 1))])
-        (r_gi, z_gi), (r_go, z_go) = bearing.groove_centres()
-        d = bearing.ball_diameter
-        self.tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
-        self.grooves = (np.repeat([r_gi, r_go], z), np.repeat([z_gi, z_go], z), np.repeat(self.tube, z))
-        self.signs = np.repeat([-1.0, 1.0], z)
-        self.params = RaceContact(d, bearing.pitch_diameter,
-                                  np.repeat([bearing.inner_conformity, bearing.outer_conformity], z), self.signs,
-                                  bearing.effective_modulus, bearing.ball_mass)
+        self.tube, self.grooves, self.signs, self.params = contact_constants(bearing, z)
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
-        self.inertia = 0.4 * bearing.ball_mass * bearing.ball_radius ** 2
+        self.inertia = bearing.ball_inertia
+        d = bearing.ball_diameter
         self.force_scale = max(axial, abs(radial), 1e-3) / (z * max(math.sin(bearing.contact_angle), 0.1))
         w_scale = abs(w_i - w_o) * bearing.pitch_diameter / d / 2 or 1.0
         self.scale = np.concatenate([np.tile([self.force_scale, w_scale, w_scale, w_scale, MICRON, MICRON], z),
@@ -164,8 +159,6 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     here if None) in steps of at most a tenth of the axial load, halved where a step does
     not converge (module docstring, MODEL.md §12a). ``converged`` False with a ``message``
     where the continuation stalls; its numbers must then not be used."""
-    from .steady import steady_state
-
     start = _time.perf_counter()
     if steady is None:
         steady = steady_state(bearing, lubricant, axial=axial, rpm=rpm, outer_rpm=outer_rpm, drag=drag,

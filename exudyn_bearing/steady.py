@@ -88,6 +88,22 @@ class _OutOfBudget(Exception):
 START_BUDGET = 1500
 
 
+def contact_constants(bearing, balls: int = 1):
+    """The ball–race contact constants of ``balls`` balls for one vectorized evaluation, inner
+    contacts of balls 0..n-1 first, then their outer ones: the groove tube radii
+    ((f_i - 0.5) D, (f_o - 0.5) D), the grooves (centre radius, centre z, tube radius) and
+    signs per contact (:func:`contact.kinematics.ball_race_kinematics`) and their
+    :class:`contact.ballrace.RaceContact` (MODEL.md §2–§3)."""
+    (r_gi, z_gi), (r_go, z_go) = bearing.groove_centres()
+    d = bearing.ball_diameter
+    tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
+    grooves = (np.repeat([r_gi, r_go], balls), np.repeat([z_gi, z_go], balls), np.repeat(tube, balls))
+    signs = np.repeat([-1.0, 1.0], balls)
+    params = RaceContact(d, bearing.pitch_diameter, np.repeat([bearing.inner_conformity, bearing.outer_conformity],
+                                                              balls), signs, bearing.effective_modulus, bearing.ball_mass)
+    return tube, grooves, signs, params
+
+
 class _OneBall:
     """The balance equations of one ball at azimuth 0 (x radial, y circumferential, z axial)."""
 
@@ -99,19 +115,12 @@ class _OneBall:
         self.pocket = pocket  # ball–pocket friction (mu, slip scale m/s), MODEL.md §11d
         self.calls, self.budget = 0, math.inf
         self.axial, self.w_i, self.w_o = axial, w_i, w_o
-        (self.r_gi, self.z_gi), (self.r_go, self.z_go) = bearing.groove_centres()
-        d = bearing.ball_diameter
-        self.tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
         # inner contact first, then outer: one vectorized evaluation of both
-        self.grooves = tuple(np.array(v) for v in zip((self.r_gi, self.z_gi, self.tube[0]),
-                                                       (self.r_go, self.z_go, self.tube[1])))
-        self.signs = np.array([-1.0, 1.0])
-        self.params = RaceContact(d, bearing.pitch_diameter, np.array([bearing.inner_conformity,
-                                                                      bearing.outer_conformity]),
-                                  self.signs, bearing.effective_modulus, bearing.ball_mass)
+        self.tube, self.grooves, self.signs, self.params = contact_constants(bearing)
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
-        self.inertia = 0.4 * bearing.ball_mass * bearing.ball_radius ** 2
+        self.inertia = bearing.ball_inertia
+        d = bearing.ball_diameter
         # ~ a ball's contact load (a zero-clearance bearing has no free angle: at least 0.1)
         self.force_scale = max(axial, 1e-3) / (bearing.balls * max(math.sin(bearing.contact_angle), 0.1))
         # unknowns scaled to O(1): speeds by the nominal cage / ball spin speeds, lengths in um
