@@ -276,8 +276,8 @@ class BearingConnector:
         if self.guide is not None:
             self._add_land_force(t, pos, rot, vel, omega, out)
         if parts is not None:  # the numpy path (the compiled kernels add the pocket friction themselves)
-            friction = self._add_pocket_friction(pos, rot, vel, omega, out, react) if self.cage.pocket_friction > 0 \
-                else None
+            friction = self._add_pocket_friction(parts[2], pos, rot, vel, omega, out, react) \
+                if self.cage.pocket_friction > 0 else None
             parts = (*parts, friction)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
@@ -368,17 +368,14 @@ class BearingConnector:
             torque = cross(pos[:, cage] - pos[:, slot], -force) - moment
             out[:, slot, 3:] += np.einsum("bji,bj->bi", rot[:, slot], torque)
 
-    def _add_pocket_friction(self, pos, rot, vel, omega, out, react):
-        """Adds the ball–pocket friction (MODEL.md §11d, :func:`contact.cage.pocket_friction`)
-        to the balls' slots and its reaction (at the contact points) to the cage's per-ball
-        parts of ``react``, in place (the numpy path; the compiled one in
-        :func:`contact.compiled.pocket_friction`); returns (force on the balls (B, Z, 3) N,
-        loss (B, Z) W)."""
+    def _add_pocket_friction(self, normal, pos, rot, vel, omega, out, react):
+        """Adds the ball–pocket friction under the pocket forces ``normal`` (B, Z, 3) (MODEL.md
+        §11d, :func:`contact.cage.pocket_friction`) to the balls' slots and its reaction (at the
+        contact points) to the cage's per-ball parts of ``react``, in place (the numpy path; the
+        compiled one in :func:`contact.compiled.pocket_friction`); returns (force on the balls
+        (B, Z, 3) N, loss (B, Z) W)."""
         s, balls = self.layout["cage"], self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
-        cage = (pos[:, s], rot[:, s], vel[:, s], omega[:, s])
-        normal = cage_physics.pocket_forces(c, v, *cage, self.pocket_angles, self.bearing.pitch_radius,
-                                            self.cage.clearance, self.cage.stiffness, self.cage_damping)
         force, point, loss = cage_physics.pocket_friction(normal, c, v, w, pos[:, s], vel[:, s], omega[:, s],
                                                           self.bearing.ball_radius, self.cage.pocket_friction,
                                                           self.cage.pocket_slip_scale)
