@@ -117,7 +117,7 @@ def report(rows, text, sim_time):
     return f"""# Friction torque: the model against the SKF model and Palmgren (issue 19 §3)
 
 Made by `python benchmarks/friction_models.py` ({sim_time:g} s simulated per speed from the steady
-state; {'all settled' if settled else 'settled: see the last column (a run not settled by the 0.1 % drift test still gave torques within 0.1 % of a 0.02-s run)'}). The 40-mm spindle bearing (`SPINDLE_40MM_BEARING`,
+state; {'all settled' if settled else 'settled: see the last column; a run not settled by the 0.1 % drift test is reported as it ended'}). The 40-mm spindle bearing (`SPINDLE_40MM_BEARING`,
 taken as a 7008-size bearing, 40 x 70 mm), ester turbine oil at 121 degC (3.2 mPa s,
 {rows[0]['nu_mm2_s']:.2f} mm²/s), 0.5 % oil in the oil–air mixture, 1 kN thrust; the model with rolling
 resistance and the thermal film factor (MODEL.md §11b, §11e), a free cage (no land
