@@ -214,11 +214,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         §12), so a run does not spend seconds of simulated time settling; under combined
         load, where the axial load alone skids, every ball in its own quasi-dynamic balance
         at one cage speed (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md
-        §12a; its continuation costs seconds: 400 N + 300 N radial on the reference bearing
-        ~11 s, after which the run holds its cage speed instead of drifting for seconds).
-        'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
-        (default): 'steady' for an axial force alone (``Driven``/``Free`` inner race, no
-        ``innerRaceDisplacement``, the steady solve converged), else 'rolling'.
+        §12a; 400 N + 300 N radial on the reference bearing ~1 s, after which the run holds
+        its cage speed instead of drifting for seconds). 'rolling': the quasi-static position
+        with pure-rolling speeds (see Notes). 'auto' (default): 'steady' where it applies
+        (``Driven``/``Free`` inner race, no ``innerRaceDisplacement``, the solve converged
+        within ``start.AUTO_CONTINUATION_STEPS`` radial-load steps), else 'rolling'.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing

@@ -283,7 +283,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="repeat at half the step and report the differences as an error estimate")
     p.add_argument("--start", choices=("auto", "steady", "rolling"), default="auto",
                    help="start state: steady (axial: the steady state; combined load: every ball's own balance, "
-                        "MODEL.md §12a), rolling (pure rolling), auto (steady for an axial load alone)")
+                        "MODEL.md §12a), rolling (pure rolling), auto (steady where it applies, else rolling)")
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
     p.set_defaults(func=_simulate)
     p = sub.add_parser("steady", help="steady rolling state under pure axial load, no time integration (MODEL.md §12)")

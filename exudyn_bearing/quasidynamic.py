@@ -21,7 +21,6 @@ import time as _time
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from contact import cage as cage_physics
 from contact.ballrace import ContactLaw, ball_race_forces
@@ -150,15 +149,46 @@ class _Balance:
         return lo, hi
 
 
+def _newton(balance, x, lo, hi, tol, max_iterations=25):
+    """Newton's method on the square system of ``balance`` from the scaled unknowns ``x``,
+    kept within the bounds (lo, hi), with a backtracking line search on the residual norm.
+    Returns (x, largest scaled residual, iterations); the residual exceeds ``tol`` where it
+    did not converge."""
+    f = balance.residual(x)
+    worst = float(np.max(np.abs(f)))
+    for iteration in range(max_iterations):
+        if worst <= tol:
+            return x, worst, iteration
+        jac = balance.jacobian(x)
+        try:
+            dx = np.linalg.solve(jac, -f)
+        except np.linalg.LinAlgError:
+            dx = np.linalg.lstsq(jac, -f, rcond=None)[0]
+        norm, lam = float(f @ f), 1.0
+        while lam >= 1.0 / 64.0:
+            trial = np.clip(x + lam * dx, lo, hi)
+            f_trial = balance.residual(trial)
+            if float(f_trial @ f_trial) < (1.0 - 1e-4 * lam) * norm:
+                break
+            lam *= 0.5
+        else:
+            return x, worst, iteration  # no descent along the Newton direction
+        x, f = trial, f_trial
+        worst = float(np.max(np.abs(f)))
+    return x, worst, max_iterations
+
+
 def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
                         drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
-                        tol: float = 1e-8) -> AzimuthStates:
+                        tol: float = 1e-8, max_steps: int | None = None) -> AzimuthStates:
     """The quasi-dynamic state under ``axial`` + ``radial`` load (N; radial along the bearing
     frame's x axis), continued in radial load from the axial steady state ``steady``
     (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds; solved
     here if None) in steps of at most a tenth of the axial load, halved where a step does
-    not converge (module docstring, MODEL.md §12a). ``converged`` False with a ``message``
-    where the continuation stalls; its numbers must then not be used."""
+    not converge (module docstring, MODEL.md §12a), each solved by a damped Newton from the
+    secant extrapolation of the two before. ``converged`` False with a ``message`` where the
+    continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
+    then not be used."""
     start = _time.perf_counter()
     if steady is None:
         steady = steady_state(bearing, lubricant, axial=axial, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
@@ -177,16 +207,22 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
     done, step, worst, balance = 0.0, min(abs(radial), max(0.1 * axial, 1e-3 * abs(radial))), 0.0, None
-    message = "converged"
+    last = None  # (radial load, state) of the step before, for the secant predictor
+    message, steps = "converged", 0
     while done < abs(radial):
+        if max_steps is not None and steps >= max_steps:
+            message = f"continuation stopped after {steps} steps at {done:g} N radial"
+            break
+        steps += 1
         target = min(done + step, abs(radial))
         balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, math.copysign(target, radial))
         lo, hi = balance.bounds()
-        sol = least_squares(balance.residual, np.clip(y / balance.scale, lo, hi), jac=balance.jacobian, method="trf",
-                            bounds=(lo, hi), xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=100)
-        worst = float(np.max(np.abs(sol.fun)))
-        if worst <= tol and not np.any(sol.active_mask != 0):
-            y, done = sol.x * balance.scale, target
+        guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
+        x, worst, iterations = _newton(balance, np.clip(guess / balance.scale, lo, hi), lo, hi, tol)
+        if worst <= tol:
+            last, y, done = (done, y), x * balance.scale, target
+            if iterations <= 3:  # an easy step: the next may be longer, within the branch-keeping limit
+                step = min(2.0 * step, max(0.1 * axial, 1e-3 * abs(radial)))
             continue
         step *= 0.5
         if step < 0.01 * axial:

@@ -10,23 +10,26 @@ __all__ = ["raceway_control"]
 
 #: under combined load the quasi-dynamic start (MODEL.md §12a) is taken where the axial load
 #: alone skids more than this, kinematic cage slip in %: below it a pure-rolling start settles
-#: within tens of milliseconds anyway (docs/DEVELOPMENT.md §15), and the start's solve costs
-#: seconds
+#: within tens of milliseconds anyway (docs/DEVELOPMENT.md §15)
 SKIDDING_START_PERCENT = 1.0
+#: continuation steps (radial load steps of at most a tenth of the axial load, and their
+#: halvings) the 'auto' start spends on the quasi-dynamic state before it falls back to pure
+#: rolling: ~0.1 s each on the reference bearing
+AUTO_CONTINUATION_STEPS = 40
 
 
 def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
                  contactLaw, ballDrag, cage=None):
     """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
-    pure axial load ('auto' and 'steady'), the :class:`~exudyn_bearing.quasidynamic.AzimuthStates`
-    under combined load where the axial load alone skids (:data:`SKIDDING_START_PERCENT`;
-    'steady' only: its continuation costs seconds), or None for the pure-rolling start
-    ('rolling', or 'auto' where the steady state does not apply or converge). Loads
-    given as functions of time start from their values at t = 0, as the quasi-static start."""
+    pure axial load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` under combined
+    load where the axial load alone skids (:data:`SKIDDING_START_PERCENT`; 'auto' gives its
+    continuation :data:`AUTO_CONTINUATION_STEPS` steps), or None for the pure-rolling start
+    ('rolling', or 'auto' where neither applies or converges). Loads given as functions of time start
+    from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
-    if initial_state == "rolling" or (initial_state == "auto" and radial != 0):
-        return None  # combined load: the quasi-dynamic start costs seconds; opt in with 'steady'
+    if initial_state == "rolling":
+        return None
     why = None
     if axial <= 0:
         why = "it needs an axial force > 0"
@@ -52,7 +55,8 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
             from .quasidynamic import combined_load_state
 
             combined = combined_load_state(bearing, lubricant, axial=axial, radial=radial, rpm=rpm_i, outer_rpm=rpm_o,
-                                           drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state)
+                                           drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state,
+                                           max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None)
             if combined.converged:
                 return combined
             why = combined.message

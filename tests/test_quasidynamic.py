@@ -42,19 +42,28 @@ def test_dynamic_run_from_the_combined_start_holds_its_cage_speed():
     assert abs(rolling.cage_speed[-1] - rolling.cage_speed[0]) > 0.05 * rolling.cage_speed[0]
 
 
-def test_auto_keeps_the_rolling_start_under_combined_load():
-    """The continuation costs seconds, so 'auto' starts combined loads from pure rolling; a
-    bearing that barely skids under its axial load refuses the explicit 'steady'."""
+def test_auto_takes_the_combined_start_where_the_axial_load_skids():
+    """'auto' starts a skidding combined load (400 N + 100 N: ~71 % slip under the axial load
+    alone) from the quasi-dynamic state and keeps pure rolling where the axial load alone does
+    not skid (2.2 kN + 2 kN), where the explicit 'steady' refuses; a continuation given too
+    few steps says so and is not used."""
     import exudyn as exu
 
     from exudyn_bearing import CreateAngularContactBearing
 
     mbs = exu.SystemContainer().AddSystem()
     handle = CreateAngularContactBearing(mbs, axialForce=400.0, radialForce=100.0, show=False)
-    assert handle.initialQuasiDynamicState is None and handle.initialSteadyState is None
+    assert handle.initialQuasiDynamicState is not None and handle.initialSteadyState is None
+    assert handle.initialQuasiDynamicState.converged
+    other = CreateAngularContactBearing(exu.SystemContainer().AddSystem(), axialForce=2200.0, radialForce=2000.0,
+                                        show=False)
+    assert other.initialQuasiDynamicState is None and other.initialSteadyState is None
     with pytest.raises(ValueError, match="skids"):
         CreateAngularContactBearing(exu.SystemContainer().AddSystem(), axialForce=2200.0, radialForce=2000.0,
                                     initialState="steady", show=False)
+    short = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=300.0, rpm=1800.0, drag=REFERENCE_DRAG,
+                                max_steps=2)
+    assert not short.converged and "after 2 steps" in short.message
 
 
 def test_cli_start_flag_takes_the_combined_start(tmp_path):
