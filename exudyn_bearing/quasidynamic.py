@@ -25,6 +25,7 @@ import numpy as np
 from contact import cage as cage_physics
 from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
+from .newton import damped_newton
 from .steady import contact_constants, steady_state
 
 __all__ = ["AzimuthStates", "combined_load_state"]
@@ -149,35 +150,6 @@ class _Balance:
         return lo, hi
 
 
-def _newton(balance, x, lo, hi, tol, max_iterations=25):
-    """Newton's method on the square system of ``balance`` from the scaled unknowns ``x``,
-    kept within the bounds (lo, hi), with a backtracking line search on the residual norm.
-    Returns (x, largest scaled residual, iterations); the residual exceeds ``tol`` where it
-    did not converge."""
-    f = balance.residual(x)
-    worst = float(np.max(np.abs(f)))
-    for iteration in range(max_iterations):
-        if worst <= tol:
-            return x, worst, iteration
-        jac = balance.jacobian(x)
-        try:
-            dx = np.linalg.solve(jac, -f)
-        except np.linalg.LinAlgError:
-            dx = np.linalg.lstsq(jac, -f, rcond=None)[0]
-        norm, lam = float(f @ f), 1.0
-        while lam >= 1.0 / 64.0:
-            trial = np.clip(x + lam * dx, lo, hi)
-            f_trial = balance.residual(trial)
-            if float(f_trial @ f_trial) < (1.0 - 1e-4 * lam) * norm:
-                break
-            lam *= 0.5
-        else:
-            return x, worst, iteration  # no descent along the Newton direction
-        x, f = trial, f_trial
-        worst = float(np.max(np.abs(f)))
-    return x, worst, max_iterations
-
-
 def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
                         drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
                         tol: float = 1e-8, max_steps: int | None = None) -> AzimuthStates:
@@ -218,7 +190,7 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
         balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, math.copysign(target, radial))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
-        x, worst, iterations = _newton(balance, np.clip(guess / balance.scale, lo, hi), lo, hi, tol)
+        x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian)
         if worst <= tol:
             last, y, done = (done, y), x * balance.scale, target
             if iterations <= 3:  # an easy step: the next may be longer, within the branch-keeping limit

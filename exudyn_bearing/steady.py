@@ -29,6 +29,7 @@ from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
+from .newton import damped_newton
 from .outputs import cage_slip
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
@@ -37,6 +38,9 @@ from .records import inputs_record, units_of
 __all__ = ["SteadyState", "steady_state", "gyroscopic_minimum_axial"]
 
 MICRON = 1e-6
+#: largest scaled residual of the start's partial balances (speeds with the position held,
+#: position with the speeds held)
+PART_TOLERANCE = 1e-10
 _E_Z = np.array([0.0, 0.0, 1.0])
 
 
@@ -250,14 +254,17 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
         ball.calls, ball.budget = 0, START_BUDGET
         try:
             x = _start(bearing, ball, axial, rpm, outer_rpm, axis=axis)
-            trial = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14,
-                                  method="trf", bounds=(lo, hi), max_nfev=2000)
+            root, trial_worst, _ = damped_newton(ball.residual, x, lo, hi, tol)
+            on_bound = bool(np.any((root <= lo) | (root >= hi)))
+            if trial_worst > tol or on_bound:  # the robust, slower search from the same start
+                trial = least_squares(ball.residual, np.clip(x, lo, hi), xtol=1e-14, ftol=1e-14, gtol=1e-14,
+                                      method="trf", bounds=(lo, hi), max_nfev=2000)
+                root, trial_worst, on_bound = trial.x, float(np.max(np.abs(trial.fun))), bool(np.any(trial.active_mask))
         except _OutOfBudget:
             continue
-        trial_worst = float(np.max(np.abs(trial.fun)))
         if trial_worst < worst:
-            sol, worst = trial, trial_worst
-        converged = bool(worst <= tol) and not np.any(sol.active_mask != 0)  # a root on a bound is no root
+            sol, worst, sol_on_bound = root, trial_worst, on_bound
+        converged = bool(worst <= tol) and not sol_on_bound  # a root on a bound is no root
         if converged:
             break
     ball.budget = math.inf
@@ -269,7 +276,7 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     message = "converged" if converged else (
         f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
         "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")
-    return _result(bearing, ball, sol.x, axial, rpm, w_i, w_o, worst, converged, message,
+    return _result(bearing, ball, sol, axial, rpm, w_i, w_o, worst, converged, message,
                    _time.perf_counter() - start, inputs)
 
 
@@ -311,6 +318,9 @@ def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
             return model.residual(full)[rows]
 
         lo, hi = bounds[0][free], bounds[1][free]
+        y, worst, _ = damped_newton(reduced, x[free], lo, hi, PART_TOLERANCE)
+        if worst <= PART_TOLERANCE:
+            return y
         return least_squares(reduced, np.clip(x[free], lo, hi), xtol=1e-12, ftol=1e-12, gtol=1e-12, method="trf",
                              bounds=(lo, hi), max_nfev=400).x
 
