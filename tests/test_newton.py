@@ -1,0 +1,35 @@
+"""The damped Newton of the steady and quasi-dynamic solvers (exudyn_bearing/newton.py) on
+problems with known roots."""
+import numpy as np
+
+from exudyn_bearing.newton import damped_newton, forward_jacobian
+
+
+def test_line_search_reaches_the_root_where_plain_newton_diverges():
+    """atan(10 (x - 1)) from x = 3: the undamped iteration runs away, the damped one converges."""
+    fun = lambda x: np.arctan(10.0 * (x - 1.0))  # noqa: E731
+    root, worst, iterations = damped_newton(fun, np.array([3.0]), np.array([-np.inf]), np.array([np.inf]), 1e-12)
+    assert abs(root[0] - 1.0) < 1e-10 and worst <= 1e-12 and 0 < iterations < 25
+    x = 3.0
+    for _ in range(5):
+        x -= np.arctan(10.0 * (x - 1.0)) * (1.0 + (10.0 * (x - 1.0)) ** 2) / 10.0
+    assert abs(x - 1.0) > 10.0
+
+
+def test_coupled_system_converges_quadratically():
+    """x² + y² = 4, x = y: the root (√2, √2) in a few steps from (3, 0.5)."""
+    fun = lambda v: np.array([v[0] ** 2 + v[1] ** 2 - 4.0, v[0] - v[1]])  # noqa: E731
+    inf = np.full(2, np.inf)
+    root, worst, iterations = damped_newton(fun, np.array([3.0, 0.5]), -inf, inf, 1e-12)
+    np.testing.assert_allclose(root, [np.sqrt(2.0), np.sqrt(2.0)], atol=1e-10)
+    assert iterations <= 8
+
+
+def test_root_outside_the_bounds_is_not_reported_as_converged():
+    root, worst, _ = damped_newton(lambda x: x + 1.0, np.array([2.0]), np.array([0.0]), np.array([5.0]), 1e-10)
+    assert worst > 1e-10 and root[0] == 0.0
+
+
+def test_forward_jacobian_of_a_linear_map_is_the_matrix():
+    a = np.array([[2.0, -1.0, 0.5], [0.0, 3.0, 1.0], [1.0, 1.0, -4.0]])
+    np.testing.assert_allclose(forward_jacobian(lambda x: a @ x, np.array([0.3, -0.2, 1.0])), a, atol=1e-8)
