@@ -46,7 +46,11 @@ def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_v
     s = np.einsum("...j,...j->...", ball_centre - centre, e)
     v_pocket = np.asarray(cage_velocity, dtype=float)[..., None, :] + cross(
         np.asarray(cage_omega, dtype=float)[..., None, :], centre - origin)
-    s_dot = np.einsum("...j,...j->...", ball_velocity - v_pocket, e)
+    # ds/dt of s = (c - centre) . e, with e turning with the cage: a ball orbiting with its
+    # pocket off the pitch circle keeps s (without the second term the damping would push it)
+    omega = np.asarray(cage_omega, dtype=float)[..., None, :]
+    s_dot = (np.einsum("...j,...j->...", ball_velocity - v_pocket, e)
+             + np.einsum("...j,...j->...", ball_centre - centre, cross(omega, e)))
     gap = 0.5 * clearance
     if gap == 0:
         magnitude = -stiffness * s - damping * s_dot

@@ -819,6 +819,13 @@ def cage_and_drag(c, v, kind, cage_o, cage_r, cage_v, cage_w, pocket_angles, pit
                 wxa2 = cage_w[ib, 0] * arm[1] - cage_w[ib, 1] * arm[0]
                 s_dot = ((v[ib, j, 0] - cage_v[ib, 0] - wxa0) * e[0] + (v[ib, j, 1] - cage_v[ib, 1] - wxa1) * e[1]
                          + (v[ib, j, 2] - cage_v[ib, 2] - wxa2) * e[2])
+                # e turns with the cage (contact.cage.pocket_forces): + (c - centre) . (w x e)
+                d0 = c[ib, j, 0] - cage_o[ib, 0] - arm[0]
+                d1 = c[ib, j, 1] - cage_o[ib, 1] - arm[1]
+                d2 = c[ib, j, 2] - cage_o[ib, 2] - arm[2]
+                s_dot += (d0 * (cage_w[ib, 1] * e[2] - cage_w[ib, 2] * e[1])
+                          + d1 * (cage_w[ib, 2] * e[0] - cage_w[ib, 0] * e[2])
+                          + d2 * (cage_w[ib, 0] * e[1] - cage_w[ib, 1] * e[0]))
                 if gap == 0.0:
                     mag = -stiffness * s - damping * s_dot
                 else:

@@ -212,13 +212,14 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
         the balance of traction, spin, drag, centrifugal and gyroscopic forces, MODEL.md
         §12), so a run does not spend seconds of simulated time settling; under combined
-        load, where the axial load alone skids, every ball in its own quasi-dynamic balance
-        at one cage speed (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md
-        §12a; 400 N + 300 N radial on the reference bearing ~1 s, after which the run holds
-        its cage speed instead of drifting for seconds). 'rolling': the quasi-static position
-        with pure-rolling speeds (see Notes). 'auto' (default): 'steady' where it applies
-        (``Driven``/``Free`` inner race, no ``innerRaceDisplacement``, the solve converged
-        within ``start.AUTO_CONTINUATION_STEPS`` radial-load steps), else 'rolling'.
+        load with an axial component, every ball in its own quasi-dynamic balance at one cage
+        speed, each where its pocket carries that balance's circumferential force
+        (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md §12a; ~0.2–1.5 s
+        to solve, after which the run holds its cage speed instead of drifting for seconds).
+        'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
+        (default): 'steady' where it applies (``Driven``/``Free`` inner race, no
+        ``innerRaceDisplacement``, an axial force > 0, the solve converged within
+        ``start.AUTO_CONTINUATION_STEPS`` radial-load steps), else 'rolling'.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
@@ -305,7 +306,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         p_out = c_loc + bearing.ball_radius * (np.cos(a_o)[:, None] * e_r + np.sin(a_o)[:, None] * e_z)
         inner_controls = choose_inner_control(bearing, lubricant, loads, w_i, w_o, initialControl)
         if initialControl == "auto":
-            w_c, omega_loc = jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls)
+            w_c, omega_loc = jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls,
+                                              inner_origin=relative[:3])
         else:
             w_c, omega_loc = raceway_control(c_loc, p_in, p_out, w_i, w_o, inner_controls, inner_origin=relative[:3])
         orbit = np.abs(w_c)
@@ -321,6 +323,13 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     if isinstance(steady, AzimuthStates):  # combined load: each ball in its own balance, one cage speed
         quasi, steady = steady, None
         c_loc = quasi.orbit_radius[:, None] * e_r + quasi.axial_position[:, None] * e_z
+        if cage.kind == "rigid":
+            # each ball where its pocket pushes it with the balance's P_j (contact.cage.pocket_forces:
+            # -k (|s| - g) sign(s) along e_psi), not at the pocket centre: there the pockets would push
+            # nothing, and the first steps would start with the balls ringing in their pockets
+            p = quasi.pocket_force
+            s = -np.sign(p) * (0.5 * cage.clearance + np.abs(p) / cage.stiffness)
+            c_loc = c_loc + s[:, None] * e_psi
         w_c = np.full(z, quasi.cage_speed)
         omega_loc = quasi.omega[:, :1] * e_r + quasi.omega[:, 1:2] * e_psi + quasi.omega[:, 2:] * e_z
         relative[:3] = quasi.displacement

@@ -152,11 +152,13 @@ class _Balance:
 
 def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
                         drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
-                        tol: float = 1e-8, max_steps: int | None = None) -> AzimuthStates:
+                        tol: float = 1e-8, max_steps: int | None = None,
+                        max_step: float | None = None) -> AzimuthStates:
     """The quasi-dynamic state under ``axial`` + ``radial`` load (N; radial along the bearing
     frame's x axis), continued in radial load from the axial steady state ``steady``
     (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds; solved
-    here if None) in steps of at most a tenth of the axial load, halved where a step does
+    here if None) in steps of at most ``max_step`` N (None: a tenth of the axial load, which
+    keeps a skidding bearing on the dynamic model's branch), halved where a step does
     not converge (module docstring, MODEL.md §12a), each solved by a damped Newton from the
     secant extrapolation of the two before. ``converged`` False with a ``message`` where the
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
@@ -178,7 +180,8 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     per[:, 5] = steady.ball_axial_position
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
-    done, step, worst, balance = 0.0, min(abs(radial), max(0.1 * axial, 1e-3 * abs(radial))), 0.0, None
+    largest = max(0.1 * axial, 1e-3 * abs(radial)) if max_step is None else max_step
+    done, step, worst, balance = 0.0, min(abs(radial), largest), 0.0, None
     last = None  # (radial load, state) of the step before, for the secant predictor
     message, steps = "converged", 0
     while done < abs(radial):
@@ -190,11 +193,13 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
         balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, math.copysign(target, radial))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
-        x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian)
+        # a step that needs more iterations than this is better halved (a good one takes 3-6)
+        x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian,
+                                             max_iterations=12)
         if worst <= tol:
             last, y, done = (done, y), x * balance.scale, target
             if iterations <= 3:  # an easy step: the next may be longer, within the branch-keeping limit
-                step = min(2.0 * step, max(0.1 * axial, 1e-3 * abs(radial)))
+                step = min(2.0 * step, largest)
             continue
         step *= 0.5
         if step < 0.01 * axial:
@@ -207,3 +212,4 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
                          d.copy(), worst, converged, message, _time.perf_counter() - start)
+

@@ -8,13 +8,12 @@ import numpy as np
 __all__ = ["raceway_control"]
 
 
-#: under combined load the quasi-dynamic start (MODEL.md §12a) is taken where the axial load
-#: alone skids more than this, kinematic cage slip in %: below it a pure-rolling start settles
-#: within tens of milliseconds anyway (docs/DEVELOPMENT.md §15)
+#: kinematic cage slip of the axial load alone, %, above which the combined-load start's
+#: continuation keeps to steps of a tenth of the axial load: a skidding bearing has several
+#: balances, and only small steps stay on the one the dynamic model holds (MODEL.md §12a)
 SKIDDING_START_PERCENT = 1.0
-#: continuation steps (radial load steps of at most a tenth of the axial load, and their
-#: halvings) the 'auto' start spends on the quasi-dynamic state before it falls back to pure
-#: rolling: ~0.1 s each on the reference bearing
+#: continuation steps (and their halvings) the 'auto' start spends on the quasi-dynamic state
+#: before it falls back to pure rolling: ~0.1 s each on the reference bearing
 AUTO_CONTINUATION_STEPS = 40
 
 
@@ -22,9 +21,9 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
                  contactLaw, ballDrag, cage=None):
     """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
     pure axial load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` under combined
-    load where the axial load alone skids (:data:`SKIDDING_START_PERCENT`; 'auto' gives its
-    continuation :data:`AUTO_CONTINUATION_STEPS` steps), or None for the pure-rolling start
-    ('rolling', or 'auto' where neither applies or converges). Loads given as functions of time start
+    load (continued from the axial steady state; 'auto' gives it
+    :data:`AUTO_CONTINUATION_STEPS` steps), or None for the pure-rolling start ('rolling', or
+    'auto' where neither applies or converges). Loads given as functions of time start
     from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
@@ -48,15 +47,16 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
             why = state.message
         elif radial == 0:
             return state
-        elif state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT:
-            why = (f"under radial load it applies where the axial load alone skids (kinematic cage slip "
-                   f"{state.kinematic_cage_slip_percent:.2f} % <= {SKIDDING_START_PERCENT:g} %)")
         else:
             from .quasidynamic import combined_load_state
 
+            # a bearing that rolls under its axial load alone has one balance: the continuation
+            # may take long steps; a skidding one is held to tenths of the axial load (its branch)
+            rolls = state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT
             combined = combined_load_state(bearing, lubricant, axial=axial, radial=radial, rpm=rpm_i, outer_rpm=rpm_o,
                                            drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state,
-                                           max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None)
+                                           max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None,
+                                           max_step=max(0.1 * axial, abs(radial) / 8) if rolls else None)
             if combined.converged:
                 return combined
             why = combined.message
@@ -97,20 +97,29 @@ def choose_inner_control(bearing, lubricant, loads, w_i, w_o, control="auto"):
     return m_i > m_o
 
 
-def jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls):
+def jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner_controls,
+                     inner_origin=(0.0, 0.0, 0.0)):
     """The 'auto' start: Jones' raceway-control angle, tan b = sin a / (cos a -/+ D/d_m) —
     the spin axis relative to the cage — taken as the absolute axis, with zero rolling slip
     at both contacts. Not a raceway-control state (both contacts spin a little), but it lies
     between the inner- and outer-controlled absolute axes and starts the combined-load
     case with the fewest step cuts (0.02 s, reference bearing, 2.2 kN + 2 kN radial: 201
-    steps for 200 and 52 Jacobians; exact inner / outer control 494 / 222 steps)."""
+    steps for 200 and 52 Jacobians; exact inner / outer control 494 / 222 steps). The inner
+    race's surface speeds are taken about its own centre ``inner_origin`` (bearing frame, m):
+    about the bearing axis instead, a race displaced 20 um by a radial load at 3000 rpm
+    would start its most loaded balls 6 mm/s off rolling."""
     from contact.kinematics import rolling_cage_speed
 
     gamma = bearing.ball_diameter / bearing.pitch_diameter
     beta = np.where(inner_controls, np.arctan2(np.sin(a_i), np.cos(a_i) - gamma),
                     np.arctan2(np.sin(a_o), np.cos(a_o) + gamma))
     axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * np.array([0.0, 0.0, 1.0])
-    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True)
+    t1 = np.stack([-c_loc[:, 1], c_loc[:, 0], np.zeros(len(c_loc))], axis=1)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    e_z = np.array([0.0, 0.0, 1.0])
+    inner = np.einsum("ij,ij->i", np.cross(w_i * e_z, p_in - np.asarray(inner_origin, dtype=float)), t1)
+    outer = np.einsum("ij,ij->i", np.cross(w_o * e_z, p_out), t1)
+    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True, surface_speeds=(inner, outer))
     return w_c, spin[:, None] * axis
 
 

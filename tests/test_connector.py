@@ -233,7 +233,8 @@ def hand_pockets(c, v, cage_pos, cage_rot, cage_vel, cage_omega, cage):
         centre = cage_pos + cage_rot @ (BRG.pitch_radius * np.array([math.cos(phi), math.sin(phi), 0.0]))
         e = cage_rot @ np.array([-math.sin(phi), math.cos(phi), 0.0])
         s = (c[j] - centre) @ e
-        s_dot = (v[j] - cage_vel - np.cross(cage_omega, centre - cage_pos)) @ e
+        # d/dt of (c - centre) . e, e turning with the cage
+        s_dot = (v[j] - cage_vel - np.cross(cage_omega, centre - cage_pos)) @ e + (c[j] - centre) @ np.cross(cage_omega, e)
         if gap == 0:
             mag = -k_p * s - c_p * s_dot
         elif abs(s) > gap:

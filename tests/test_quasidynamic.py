@@ -42,25 +42,38 @@ def test_dynamic_run_from_the_combined_start_holds_its_cage_speed():
     assert abs(rolling.cage_speed[-1] - rolling.cage_speed[0]) > 0.05 * rolling.cage_speed[0]
 
 
-def test_auto_takes_the_combined_start_where_the_axial_load_skids():
-    """'auto' starts a skidding combined load (400 N + 100 N: ~71 % slip under the axial load
-    alone) from the quasi-dynamic state and keeps pure rolling where the axial load alone does
-    not skid (2.2 kN + 2 kN), where the explicit 'steady' refuses; a continuation given too
-    few steps says so and is not used."""
+def _pocket_forces_at_start(mbs, handle):
+    """The cage's force on each ball (Z, 3) in the assembled start state, from the connector."""
+    import exudyn as exu
+
+    mbs.Assemble()
+    q = np.asarray(mbs.systemData.GetODE2Coordinates(configuration=exu.ConfigurationType.Initial))
+    q_t = np.asarray(mbs.systemData.GetODE2Coordinates_t(configuration=exu.ConfigurationType.Initial))
+    idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6) for n in handle.nodeNumbers])
+    return handle.connector.evaluate(0.0, q[idx] + handle.connector.reference, q_t[idx], details=True).cage_force
+
+
+def test_auto_takes_the_combined_start_and_loads_the_pockets():
+    """'auto' starts combined loads from the quasi-dynamic state, whether the axial load alone
+    skids (400 N + 100 N: ~71 % slip) or not (2.2 kN + 2 kN); a continuation given too few
+    steps says so. Each ball starts where its pocket pushes it with the balance's
+    circumferential force P_j (to 0.1 %), not at the pocket centre (where it would push
+    nothing and the balls would start ringing in their pockets)."""
     import exudyn as exu
 
     from exudyn_bearing import CreateAngularContactBearing
 
-    mbs = exu.SystemContainer().AddSystem()
-    handle = CreateAngularContactBearing(mbs, axialForce=400.0, radialForce=100.0, show=False)
-    assert handle.initialQuasiDynamicState is not None and handle.initialSteadyState is None
-    assert handle.initialQuasiDynamicState.converged
-    other = CreateAngularContactBearing(exu.SystemContainer().AddSystem(), axialForce=2200.0, radialForce=2000.0,
-                                        show=False)
-    assert other.initialQuasiDynamicState is None and other.initialSteadyState is None
-    with pytest.raises(ValueError, match="skids"):
-        CreateAngularContactBearing(exu.SystemContainer().AddSystem(), axialForce=2200.0, radialForce=2000.0,
-                                    initialState="steady", show=False)
+    for axial, radial in ((400.0, 100.0), (2200.0, 2000.0)):
+        mbs = exu.SystemContainer().AddSystem()
+        handle = CreateAngularContactBearing(mbs, axialForce=axial, radialForce=radial, show=False)
+        state = handle.initialQuasiDynamicState
+        assert state is not None and state.converged and handle.initialSteadyState is None
+        cage = _pocket_forces_at_start(mbs, handle)
+        psi = state.azimuth
+        circumferential = -cage[:, 0] * np.sin(psi) + cage[:, 1] * np.cos(psi)
+        assert np.max(np.abs(state.pocket_force)) > 0.5
+        np.testing.assert_allclose(circumferential, state.pocket_force, rtol=0,
+                                   atol=1e-3 * np.max(np.abs(state.pocket_force)))
     short = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=300.0, rpm=1800.0, drag=REFERENCE_DRAG,
                                 max_steps=2)
     assert not short.converged and "after 2 steps" in short.message
