@@ -212,13 +212,13 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:
         the balance of traction, spin, drag, centrifugal and gyroscopic forces, MODEL.md
         §12), so a run does not spend seconds of simulated time settling; under combined
-        load with an axial component, every ball in its own quasi-dynamic balance at one cage
+        or radial load, every ball in its own quasi-dynamic balance at one cage
         speed, each where its pocket carries that balance's circumferential force
         (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md §12a; ~0.2–1.5 s
         to solve, after which the run holds its cage speed instead of drifting for seconds).
         'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
         (default): 'steady' where it applies (``Driven``/``Free`` inner race, no
-        ``innerRaceDisplacement``, an axial force > 0, the solve converged within
+        ``innerRaceDisplacement``, a load, the solve converged within
         ``start.AUTO_CONTINUATION_STEPS`` radial-load steps), else 'rolling'.
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from

@@ -150,22 +150,30 @@ class _Balance:
         return lo, hi
 
 
+#: a pure radial load is reached from the axial steady state at this fraction of it, the axial
+#: load then taken back to zero (MODEL.md §12a)
+RADIAL_SEED_FRACTION = 0.1
+
+
 def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
                         drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
                         tol: float = 1e-8, max_steps: int | None = None,
                         max_step: float | None = None) -> AzimuthStates:
     """The quasi-dynamic state under ``axial`` + ``radial`` load (N; radial along the bearing
     frame's x axis), continued in radial load from the axial steady state ``steady``
-    (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds; solved
-    here if None) in steps of at most ``max_step`` N (None: a tenth of the axial load, which
-    keeps a skidding bearing on the dynamic model's branch), halved where a step does
-    not converge (module docstring, MODEL.md §12a), each solved by a damped Newton from the
-    secant extrapolation of the two before. ``converged`` False with a ``message`` where the
+    (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds at
+    ``axial``, or at :data:`RADIAL_SEED_FRACTION` of the radial load where ``axial`` is 0;
+    solved here if None) in steps of at most ``max_step`` N (None: a tenth of the axial
+    load, which keeps a skidding bearing on the dynamic model's branch), halved where a step
+    does not converge (module docstring, MODEL.md §12a), each solved by a damped Newton from
+    the secant extrapolation of the two before; under pure radial load the seed's axial load
+    is then taken back to zero the same way. ``converged`` False with a ``message`` where the
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
     then not be used."""
     start = _time.perf_counter()
+    seed = axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
     if steady is None:
-        steady = steady_state(bearing, lubricant, axial=axial, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
+        steady = steady_state(bearing, lubricant, axial=seed, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
                               contact_law=contact_law, cage=cage)
     # the accurate traction rule (smooth for the root finder); order 8 gives the order-16 cage
     # speed to 2e-5 (400 N + 300 N: 46.149 / 46.150 rad/s) at 60 % of its cost
@@ -180,36 +188,61 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     per[:, 5] = steady.ball_axial_position
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
-    largest = max(0.1 * axial, 1e-3 * abs(radial)) if max_step is None else max_step
-    done, step, worst, balance = 0.0, min(abs(radial), largest), 0.0, None
-    last = None  # (radial load, state) of the step before, for the secant predictor
-    message, steps = "converged", 0
-    while done < abs(radial):
-        if max_steps is not None and steps >= max_steps:
-            message = f"continuation stopped after {steps} steps at {done:g} N radial"
-            break
-        steps += 1
-        target = min(done + step, abs(radial))
-        balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, math.copysign(target, radial))
+    make = lambda a, r: _Balance(bearing, lubricant, w_i, w_o, drag, law, land, a, r)  # noqa: E731
+    largest = max(0.1 * seed, 1e-3 * abs(radial)) if max_step is None else max_step
+    budget = [max_steps]
+    y, worst, message, balance = _continue(make, y, (seed, 0.0), (seed, radial), largest, tol, budget)
+    if message is None and axial <= 0 < abs(radial):
+        y, worst, message, balance = _continue(make, y, (seed, radial), (0.0, radial), 0.25 * seed, tol, budget)
+    converged = message is None
+    if balance is None:  # no load step: the steady state itself
+        balance = make(axial, 0.0)
+    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
+    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
+                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)
+
+
+def _continue(make, y, load_from, load_to, largest, tol, budget):
+    """Continuation of the unscaled unknowns ``y`` along the straight load path from
+    ``load_from`` to ``load_to`` ((axial, radial), N; ``make(axial, radial)`` builds the
+    balance) in steps of at most ``largest`` N of load change, halved where Newton fails
+    (stalled below 1/100 of ``largest``), doubled back after an easy step; ``budget`` = [steps
+    left or None], shared across calls. Returns (y, worst residual, None or why it stopped,
+    the last balance)."""
+    a0, r0 = load_from
+    span = math.hypot(load_to[0] - a0, load_to[1] - r0)
+    if span == 0.0:
+        return y, 0.0, None, None
+    done, step, worst, balance = 0.0, min(1.0, largest / span), 0.0, None
+    last = None  # (path parameter, state) of the step before, for the secant predictor
+    while done < 1.0:
+        if budget[0] is not None:
+            if budget[0] <= 0:
+                return y, worst, f"continuation stopped: its steps ran out at {_load_text(load_from, load_to, done)}", balance
+            budget[0] -= 1
+        target = min(done + step, 1.0)
+        balance = make(a0 + target * (load_to[0] - a0), math.copysign(abs(r0 + target * (load_to[1] - r0)), load_to[1]))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
         # a step that needs more iterations than this is better halved (a good one takes 3-6)
         x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian,
                                              max_iterations=12)
+        if worst > tol and last is not None and iterations == 0:  # the extrapolation overshot: from y
+            x, worst, iterations = damped_newton(balance.residual, y / balance.scale, lo, hi, tol, balance.jacobian,
+                                                 max_iterations=12)
         if worst <= tol:
             last, y, done = (done, y), x * balance.scale, target
-            if iterations <= 3:  # an easy step: the next may be longer, within the branch-keeping limit
-                step = min(2.0 * step, largest)
+            if iterations <= 3:  # an easy step: the next may be longer, within the limit
+                step = min(2.0 * step, largest / span)
             continue
         step *= 0.5
-        if step < 0.01 * axial:
-            message = (f"no quasi-dynamic balance found beyond {done:g} N radial (largest scaled residual "
-                       f"{worst:.2g} at {target:g} N)")
-            break
-    converged = done >= abs(radial)
-    if balance is None:  # no radial load: the steady state itself
-        balance = _Balance(bearing, lubricant, w_i, w_o, drag, law, land, axial, 0.0)
-    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
-    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, converged, message, _time.perf_counter() - start)
+        if step < 0.01 * largest / span:
+            return y, worst, (f"no quasi-dynamic balance found beyond {_load_text(load_from, load_to, done)} (largest "
+                              f"scaled residual {worst:.2g} at {_load_text(load_from, load_to, target)})"), balance
+    return y, worst, None, balance
 
+
+def _load_text(load_from, load_to, t):
+    a = load_from[0] + t * (load_to[0] - load_from[0])
+    r = load_from[1] + t * (load_to[1] - load_from[1])
+    return f"{a:g} N axial + {abs(r):g} N radial"

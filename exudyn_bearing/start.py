@@ -30,8 +30,8 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
     if initial_state == "rolling":
         return None
     why = None
-    if axial <= 0:
-        why = "it needs an axial force > 0"
+    if axial <= 0 and radial == 0:
+        why = "it needs a load"
     elif inner.kind not in ("driven", "free") or displaced:
         why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
@@ -39,9 +39,12 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
     elif radial != 0 and sense < 0:
         why = "under radial load it needs a positive inner-race speed"
     if why is None:
+        from .quasidynamic import RADIAL_SEED_FRACTION
         from .steady import steady_state
 
-        state = steady_state(bearing, lubricant, axial=axial, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
+        # a pure radial load continues from a seed axial load (quasidynamic.combined_load_state)
+        seed = axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
+        state = steady_state(bearing, lubricant, axial=seed, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
                              drag=ballDrag, contact_law=contactLaw, cage=cage)
         if not state.converged:
             why = state.message
@@ -56,7 +59,7 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
             combined = combined_load_state(bearing, lubricant, axial=axial, radial=radial, rpm=rpm_i, outer_rpm=rpm_o,
                                            drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state,
                                            max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None,
-                                           max_step=max(0.1 * axial, abs(radial) / 8) if rolls else None)
+                                           max_step=max(0.1 * seed, abs(radial) / 8) if rolls else None)
             if combined.converged:
                 return combined
             why = combined.message

@@ -76,7 +76,26 @@ def test_auto_takes_the_combined_start_and_loads_the_pockets():
                                    atol=1e-3 * np.max(np.abs(state.pocket_force)))
     short = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=300.0, rpm=1800.0, drag=REFERENCE_DRAG,
                                 max_steps=2)
-    assert not short.converged and "after 2 steps" in short.message
+    assert not short.converged and "steps ran out" in short.message
+
+
+def test_pure_radial_start_balances_every_ball():
+    """Pure radial load (the README's deep-groove bearing, 10 um clearance, 2.5 kN, 3000 rpm)
+    starts from the quasi-dynamic state continued from a seed axial load and taken back to
+    zero: the inner race moves along the load, the cage's pocket forces are in torque balance
+    (a free cage) and the cage turns at the kinematic speed of a rolling bearing."""
+    from exudyn_bearing import Bearing
+
+    deep = Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
+                                  inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
+    state = combined_load_state(deep, REFERENCE_LUBRICANT, axial=0.0, radial=2500.0, rpm=3000.0, drag=REFERENCE_DRAG)
+    assert state.converged, state.message
+    # along the load, with a small sideways shift from the contacts' traction
+    assert state.displacement[0] > 0 and abs(state.displacement[1]) < 0.02 * state.displacement[0]
+    assert abs(np.sum(state.pocket_force * state.orbit_radius)) < 1e-6 * max(np.max(np.abs(state.pocket_force)), 1e-3)
+    # the kinematic orbital speed of a rolling deep-groove bearing: w_i (1 - D/d_m) / 2 within 1 %
+    w_i = 3000.0 * np.pi / 30.0
+    assert state.cage_speed == pytest.approx(0.5 * w_i * (1 - deep.ball_diameter / deep.pitch_diameter), rel=0.01)
 
 
 def test_cli_start_flag_takes_the_combined_start(tmp_path):

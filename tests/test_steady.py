@@ -109,16 +109,16 @@ def test_bad_input_names_the_parameter(kw, name):
         steady_state(**kw)
 
 
-def test_steady_start_needs_an_axial_load_and_a_created_inner_race():
-    """'steady' refuses what it cannot start (no axial load, a race the bearing did not
-    create, an unknown name); 'auto' then starts from pure rolling."""
+def test_steady_start_needs_a_load_and_a_created_inner_race():
+    """'steady' refuses what it cannot start (no load, a race the bearing did not create, an
+    unknown name); 'auto' then starts from pure rolling."""
     import exudyn as exu
 
     from exudyn_bearing import CreateAngularContactBearing
 
     mbs = exu.SystemContainer().AddSystem()
-    with pytest.raises(ValueError, match="initialState.*axial force"):
-        CreateAngularContactBearing(mbs, axialForce=0.0, radialForce=2000.0, initialState="steady", show=False)
+    with pytest.raises(ValueError, match="initialState.*needs a load"):
+        CreateAngularContactBearing(mbs, axialForce=0.0, initialState="steady", show=False)
     with pytest.raises(ValueError, match="initialState"):
         CreateAngularContactBearing(mbs, axialForce=1300.0, initialState="quasi", show=False)
     with pytest.raises(ValueError, match="initialState"):
