@@ -21,9 +21,9 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
                  contactLaw, ballDrag, cage=None):
     """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
     pure axial load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` under combined
-    load (continued from the axial steady state; 'auto' gives it
-    :data:`AUTO_CONTINUATION_STEPS` steps), or None for the pure-rolling start ('rolling', or
-    'auto' where neither applies or converges). Loads given as functions of time start
+    or pure radial load (continued from the axial steady state, or from that at a seed axial
+    load; 'auto' gives it :data:`AUTO_CONTINUATION_STEPS` steps), or None for the
+    pure-rolling start ('rolling', or 'auto' where neither applies or converges). Loads given as functions of time start
     from their values at t = 0, as the quasi-static start."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
