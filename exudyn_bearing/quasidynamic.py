@@ -152,8 +152,8 @@ class _Balance:
         return lo, hi
 
 
-#: a pure radial load is reached from the axial steady state at this fraction of it, the axial
-#: load then taken back to zero (MODEL.md §12a)
+#: a pure radial load is reached from the steady state at an axial load of this fraction of
+#: the radial load, which is then taken back to zero (MODEL.md §12a)
 RADIAL_SEED_FRACTION = 0.1
 
 
