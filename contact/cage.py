@@ -164,9 +164,22 @@ def land_forces(cage_origin, cage_velocity, race_origin, race_velocity, axis, ra
     e = np.linalg.norm(e_vec, axis=-1)
     n = e_vec / np.where(e > 0, e, 1.0)[..., None]
     e_dot = np.einsum("...j,...j->...", np.asarray(cage_velocity, dtype=float) - race_velocity, n)
-    magnitude = np.where(e > radial_clearance, np.maximum(stiffness * (e - radial_clearance) + damping * e_dot, 0.0),
-                         0.0)
+    pen = e - radial_clearance
+    magnitude = np.where(pen > 0, np.maximum(stiffness * pen + damping * contact_ramp(pen) * e_dot, 0.0), 0.0)
     return -magnitude[..., None] * n
+
+
+#: penetration over which the guiding land's damping rises from zero to its full value, m
+#: (contact_ramp): the contact force then starts from zero at any approach speed
+LAND_DAMPING_DEPTH = 10e-6
+
+
+def contact_ramp(penetration, depth=LAND_DAMPING_DEPTH):
+    """Cubic step 3 u² − 2 u³ of u = penetration / depth, clipped to [0, 1]: the share of the
+    damping active at that penetration (the ramp of MSC Adams' IMPACT function), so a contact
+    closing at speed starts with zero force instead of c times the speed."""
+    u = np.clip(np.asarray(penetration, dtype=float) / depth, 0.0, 1.0)
+    return u * u * (3.0 - 2.0 * u)
 
 
 def land_friction_constant(viscosity, radius, width, radial_clearance):

@@ -47,6 +47,7 @@ from numba import njit, prange, types  # noqa: E402
 from numba.extending import intrinsic  # noqa: E402
 
 from . import traction_fast as _tr
+from .cage import LAND_DAMPING_DEPTH
 
 __all__ = ["crook_fast", "crook_tables", "race_contacts", "race_contacts_parallel", "cage_and_drag",
            "land_forces", "rotation_matrices"]
@@ -758,7 +759,8 @@ def land_forces(cage_o, cage_v, race_o, race_v, axis, play, stiffness, damping, 
             n0, n1, n2 = e0 / e, e1 / e, e2 / e
             e_dot = ((cage_v[b, 0] - race_v[r, 0]) * n0 + (cage_v[b, 1] - race_v[r, 1]) * n1
                      + (cage_v[b, 2] - race_v[r, 2]) * n2)
-            magnitude = max(stiffness * (e - play) + damping * e_dot, 0.0)
+            u = min((e - play) / LAND_DAMPING_DEPTH, 1.0)  # contact.cage.contact_ramp
+            magnitude = max(stiffness * (e - play) + damping * u * u * (3.0 - 2.0 * u) * e_dot, 0.0)
             force[b, 0], force[b, 1], force[b, 2] = -magnitude * n0, -magnitude * n1, -magnitude * n2
 
 

@@ -44,7 +44,9 @@ class CageModel:
     guide_stiffness : float
         Land contact stiffness, N/m.
     guide_damping : float or None
-        N s/m; None: 20 % of critical for the cage mass on ``guide_stiffness``.
+        N s/m; None: 20 % of critical for the cage mass on ``guide_stiffness``. It rises from
+        zero over the first ``contact.cage.LAND_DAMPING_DEPTH`` (10 um) of penetration, so a
+        cage closing on its land at speed meets a force that starts from zero.
     land_width : float
         Axial width L of the guiding land, m; > 0 adds the oil film's friction torque between
         cage and land (MODEL.md §11d: the short-journal shear torque

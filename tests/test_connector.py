@@ -502,7 +502,8 @@ def test_land_guidance_force_by_hand(guidance):
     e = np.linalg.norm(e_vec)
     n = e_vec / e
     e_dot = (vv[cage, :3] - vv[race, :3]) @ n
-    f_cage = -(2e7 * (e - 0.2e-3) + 300.0 * e_dot) * n
+    u = min((e - 0.2e-3) / 10e-6, 1.0)  # the damping's ramp over the first 10 um (MODEL.md §1)
+    f_cage = -(2e7 * (e - 0.2e-3) + 300.0 * u * u * (3 - 2 * u) * e_dot) * n
     assert 500.0 < np.linalg.norm(f_cage) < 2000.0  # engaged, damping term visible
     tau_race = np.cross(qq[cage, :3] - qq[race, :3], -f_cage)
     scale = np.linalg.norm(f_cage)

@@ -1,5 +1,6 @@
-"""Ball–pocket contact of the rigid cage (contact/cage.pocket_forces, MODEL.md §1) and its
-compiled twin: the pocket's damping acts on the rate of the ball's offset in its pocket."""
+"""Ball–pocket and guiding-land contacts of the rigid cage (contact/cage.py, MODEL.md §1) and
+their compiled twins: the pocket's damping acts on the rate of the ball's offset in its
+pocket; the land's damping rises from zero with the penetration."""
 import numpy as np
 import pytest
 
@@ -54,3 +55,29 @@ def test_compiled_pocket_forces_match():
     kernels.cage_and_drag(c[None], v[None], 1, cage_o, rot, cage_v, w[None], psi, PITCH, 0.0, STIFFNESS, DAMPING,
                           np.array([0.0, 0.0, 1.0]), np.zeros(3), 0.0, cage_force, drag_force)
     np.testing.assert_allclose(cage_force, expected, rtol=1e-9, atol=1e-12)
+
+
+def test_land_force_starts_from_zero_at_any_approach_speed():
+    """A cage closing on its land at 0.2 m/s: the force is continuous at contact (zero at the
+    land, not c * 0.2 m/s), has its full damping beyond the ramp's 10 um, and pushes only."""
+    from contact.cage import LAND_DAMPING_DEPTH, land_forces
+
+    k, c, play = 1e7, 160.0, 0.2e-3
+    axis, race = np.array([0.0, 0.0, 1.0]), np.zeros(3)
+    v = np.array([0.2, 0.0, 0.0])
+
+    def force(pen, speed=v):
+        return land_forces(np.array([play + pen, 0.0, 0.0]), speed, race, race, axis, play, k, c)[0]
+
+    assert abs(force(1e-12)) < 1e-4 and force(-1e-6) == 0.0
+    assert force(2 * LAND_DAMPING_DEPTH) == pytest.approx(-(k * 2 * LAND_DAMPING_DEPTH + c * 0.2))
+    small = force(0.1 * LAND_DAMPING_DEPTH)
+    assert -(k * 0.1 * LAND_DAMPING_DEPTH + c * 0.2) < small < -k * 0.1 * LAND_DAMPING_DEPTH
+    # leaving the land fast, the damping never makes it pull
+    assert force(2 * LAND_DAMPING_DEPTH, -50 * v) == 0.0
+    kernels = pytest.importorskip("contact.compiled")
+    for pen in (1e-12, 0.1 * LAND_DAMPING_DEPTH, 0.7 * LAND_DAMPING_DEPTH, 2 * LAND_DAMPING_DEPTH):
+        out, ecc = np.zeros((1, 3)), np.zeros(1)
+        kernels.land_forces(np.array([[play + pen, 0.0, 0.0]]), v[None], race[None], race[None], axis[None], play, k, c,
+                            out, ecc)
+        np.testing.assert_allclose(out[0], [force(pen), 0.0, 0.0], rtol=1e-12, atol=1e-12)
