@@ -249,7 +249,7 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
     # outer-raceway control, the continuation from it can run away: then the exact
     # raceway-control axes (MODEL.md §7, §12)
-    sol, worst, converged, x = None, math.inf, False, np.clip(np.zeros(7), lo, hi)
+    sol, worst, converged, x, sol_on_bound = None, math.inf, False, np.clip(np.zeros(7), lo, hi), False
     for axis in ("free", "outer", "inner"):
         ball.calls, ball.budget = 0, START_BUDGET
         try:
