@@ -176,8 +176,8 @@ LAND_DAMPING_DEPTH = 10e-6
 
 def contact_ramp(penetration, depth=LAND_DAMPING_DEPTH):
     """Cubic step 3 u² − 2 u³ of u = penetration / depth, clipped to [0, 1]: the share of the
-    damping active at that penetration (the ramp of MSC Adams' IMPACT function), so a contact
-    closing at speed starts with zero force instead of c times the speed."""
+    damping active at that penetration (the ramp of MSC Adams' IMPACT function; MODEL.md §11d),
+    so a contact closing at speed starts with zero force instead of c times the speed."""
     u = np.clip(np.asarray(penetration, dtype=float) / depth, 0.0, 1.0)
     return u * u * (3.0 - 2.0 * u)
 

@@ -121,15 +121,16 @@ def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, ra
 
 
 def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_speed, outer_speed,
-                       return_spin=False, surface_speeds=None):
+                       return_spin=False, surface_speeds=None, inner_origin=(0.0, 0.0, 0.0)):
     """Pure-rolling (kinematic) orbital speed of each ball for its actual geometry and
     spin-axis direction (MODEL.md §7), rad/s.
 
     Solves, per ball, for the orbital speed w_c and spin magnitude W with zero
     rolling-direction slip at both contact centres:
     w_c r_c + W (e x (p - c)) . t1 = w_race rho_p, for the inner and the outer contact.
-    All positions in a frame whose z axis is the bearing axis with origin on it (the race
-    axes are taken as coincident).
+    All positions in a frame whose z axis is the bearing axis with origin on it; the inner
+    race turns about its own centre ``inner_origin`` (a radially displaced race), the outer
+    about the origin.
 
     Parameters
     ----------
@@ -144,6 +145,8 @@ def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_s
         replace w_race rho_p (e.g. for a race displaced from the bearing axis).
     return_spin : bool
         Also return W, the spin speed about ``spin_axis`` (rad/s).
+    inner_origin : (3,), optional
+        Centre of the inner race, m (its axis parallel to z).
 
     Returns
     -------
@@ -159,11 +162,12 @@ def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_s
     t1 = np.stack([-c[:, 1], c[:, 0], np.zeros(len(c))], axis=1) / r_c[:, None]
     rows = []
     rhs = []
-    for i, (p, speed) in enumerate(((inner_point, inner_speed), (outer_point, outer_speed))):
+    races = ((inner_point, inner_speed, inner_origin), (outer_point, outer_speed, (0.0, 0.0, 0.0)))
+    for i, (p, speed, o) in enumerate(races):
         p = np.asarray(p, dtype=float)
         rows.append(np.stack([r_c, _dot(cross(e, p - c), t1)], axis=1))
-        if surface_speeds is None:
-            rhs.append(speed * _dot(cross([0.0, 0.0, 1.0], p), t1))  # race surface speed w rho_p
+        if surface_speeds is None:  # race surface speed w rho_p about the race's own centre
+            rhs.append(speed * _dot(cross([0.0, 0.0, 1.0], p - np.asarray(o, dtype=float)), t1))
         else:
             rhs.append(np.asarray(surface_speeds[i], dtype=float))
     a = np.stack(rows, axis=1)  # (n, 2, 2)

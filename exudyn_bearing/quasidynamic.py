@@ -30,7 +30,7 @@ from contact.kinematics import ball_race_kinematics
 from .newton import damped_newton
 from .steady import contact_constants, steady_state
 
-__all__ = ["AzimuthStates", "combined_load_state"]
+__all__ = ["AzimuthStates", "combined_load_state", "seed_axial_load"]
 
 MICRON = 1e-6
 _E_Z = np.array([0.0, 0.0, 1.0])
@@ -157,6 +157,12 @@ class _Balance:
 RADIAL_SEED_FRACTION = 0.1
 
 
+def seed_axial_load(axial: float, radial: float) -> float:
+    """The axial load, N, whose steady state the continuation starts from: ``axial`` itself,
+    or :data:`RADIAL_SEED_FRACTION` of the radial load where there is no axial load."""
+    return axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
+
+
 def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
                         drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
                         tol: float = 1e-8, max_steps: int | None = None,
@@ -173,7 +179,7 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
     then not be used."""
     start = _time.perf_counter()
-    seed = axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
+    seed = seed_axial_load(axial, radial)
     if steady is None:
         steady = steady_state(bearing, lubricant, axial=seed, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
                               contact_law=contact_law, cage=cage)
@@ -192,10 +198,9 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     y[-1] = steady.inner_race_shift
     make = lambda a, r: _Balance(bearing, lubricant, w_i, w_o, drag, law, land, a, r)  # noqa: E731
     largest = max(0.1 * seed, 1e-3 * abs(radial)) if max_step is None else max_step
-    budget = [max_steps]
-    y, worst, message, balance = _continue(make, y, (seed, 0.0), (seed, radial), largest, tol, budget)
+    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial), largest, tol, max_steps)
     if message is None and axial <= 0 < abs(radial):
-        y, worst, message, balance = _continue(make, y, (seed, radial), (0.0, radial), 0.25 * seed, tol, budget)
+        y, worst, message, balance, left = _continue(make, y, (seed, radial), (0.0, radial), 0.25 * seed, tol, left)
     converged = message is None
     if balance is None:  # no load step: the steady state itself
         balance = make(axial, 0.0)
@@ -204,26 +209,27 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
                          d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)
 
 
-def _continue(make, y, load_from, load_to, largest, tol, budget):
+def _continue(make, y, load_from, load_to, largest, tol, steps_left):
     """Continuation of the unscaled unknowns ``y`` along the straight load path from
     ``load_from`` to ``load_to`` ((axial, radial), N; ``make(axial, radial)`` builds the
     balance) in steps of at most ``largest`` N of load change, halved where Newton fails
-    (stalled below 1/100 of ``largest``), doubled back after an easy step; ``budget`` = [steps
-    left or None], shared across calls. Returns (y, worst residual, None or why it stopped,
-    the last balance)."""
+    (stalled below 1/100 of ``largest``), doubled back after an easy step, at most
+    ``steps_left`` steps (None: no limit). Returns (y, worst residual, None or why it
+    stopped, the last balance, steps left)."""
     a0, r0 = load_from
     span = math.hypot(load_to[0] - a0, load_to[1] - r0)
     if span == 0.0:
-        return y, 0.0, None, None
+        return y, 0.0, None, None, steps_left
     done, step, worst, balance = 0.0, min(1.0, largest / span), 0.0, None
     last = None  # (path parameter, state) of the step before, for the secant predictor
     while done < 1.0:
-        if budget[0] is not None:
-            if budget[0] <= 0:
-                return y, worst, f"continuation stopped: its steps ran out at {_load_text(load_from, load_to, done)}", balance
-            budget[0] -= 1
+        if steps_left is not None:
+            if steps_left <= 0:
+                return (y, worst, f"continuation stopped: its steps ran out at {_load_text(load_from, load_to, done)}",
+                        balance, steps_left)
+            steps_left -= 1
         target = min(done + step, 1.0)
-        balance = make(a0 + target * (load_to[0] - a0), math.copysign(abs(r0 + target * (load_to[1] - r0)), load_to[1]))
+        balance = make(a0 + target * (load_to[0] - a0), r0 + target * (load_to[1] - r0))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
         # a step that needs more iterations than this is better halved (a good one takes 3-6)
@@ -240,8 +246,8 @@ def _continue(make, y, load_from, load_to, largest, tol, budget):
         step *= 0.5
         if step < 0.01 * largest / span:
             return y, worst, (f"no quasi-dynamic balance found beyond {_load_text(load_from, load_to, done)} (largest "
-                              f"scaled residual {worst:.2g} at {_load_text(load_from, load_to, target)})"), balance
-    return y, worst, None, balance
+                              f"scaled residual {worst:.2g} at {_load_text(load_from, load_to, target)})"), balance, steps_left
+    return y, worst, None, balance, steps_left
 
 
 def _load_text(load_from, load_to, t):

@@ -39,11 +39,10 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
     elif radial != 0 and sense < 0:
         why = "under radial load it needs a positive inner-race speed"
     if why is None:
-        from .quasidynamic import RADIAL_SEED_FRACTION
+        from .quasidynamic import seed_axial_load
         from .steady import steady_state
 
-        # a pure radial load continues from a seed axial load (quasidynamic.combined_load_state)
-        seed = axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
+        seed = seed_axial_load(axial, radial)  # a pure radial load continues from a seed axial load
         state = steady_state(bearing, lubricant, axial=seed, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
                              drag=ballDrag, contact_law=contactLaw, cage=cage)
         if not state.converged:
@@ -117,12 +116,7 @@ def jones_axis_start(bearing, c_loc, p_in, p_out, a_i, a_o, e_r, w_i, w_o, inner
     beta = np.where(inner_controls, np.arctan2(np.sin(a_i), np.cos(a_i) - gamma),
                     np.arctan2(np.sin(a_o), np.cos(a_o) + gamma))
     axis = -np.sin(beta)[:, None] * e_r + np.cos(beta)[:, None] * np.array([0.0, 0.0, 1.0])
-    t1 = np.stack([-c_loc[:, 1], c_loc[:, 0], np.zeros(len(c_loc))], axis=1)
-    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
-    e_z = np.array([0.0, 0.0, 1.0])
-    inner = np.einsum("ij,ij->i", np.cross(w_i * e_z, p_in - np.asarray(inner_origin, dtype=float)), t1)
-    outer = np.einsum("ij,ij->i", np.cross(w_o * e_z, p_out), t1)
-    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True, surface_speeds=(inner, outer))
+    w_c, spin = rolling_cage_speed(c_loc, axis, p_in, p_out, w_i, w_o, return_spin=True, inner_origin=inner_origin)
     return w_c, spin[:, None] * axis
 
 
