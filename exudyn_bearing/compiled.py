@@ -326,6 +326,62 @@ def jacobian_assemble(out, react, steps, col_group, col_k, col_v, group_block, g
                     jac[6 * s + r, col] -= fac * d
 
 
+@njit(cache=True, error_model="numpy")
+def ball_rotation_columns(out, react, steps, wcol, group_block, ball_group, balls, others, w_local, f_q, jac):
+    """Adds -f_q dF/d theta_k, the balls' rotation columns, to ``jac`` from the local
+    angular velocity columns of :func:`jacobian_states`' states (``wcol[g]``: the column
+    indices of group g's omega_1..3, -1 where g is no ball group) instead of three more
+    perturbed states (MODEL.md §10). A ball's forces depend on its orientation A only
+    through omega = A w_l and through the moment rows A^T M, so for A -> A exp(eps e_k~):
+    dF/d theta_k = sum_j (e_k x w_l)_j dF/dw_l,j, and the ball's own moment rows take
+    -(e_k x A^T M) besides."""
+    n = out.shape[1]
+    cvec = np.empty(3)
+    for jb in range(balls.shape[0]):
+        b = balls[jb]
+        g = ball_group[jb]
+        w = w_local[b]
+        m = out[0, b, 3:6]
+        for k in range(3):
+            if k == 0:
+                cvec[0], cvec[1], cvec[2] = 0.0, -w[2], w[1]
+            elif k == 1:
+                cvec[0], cvec[1], cvec[2] = w[2], 0.0, -w[0]
+            else:
+                cvec[0], cvec[1], cvec[2] = -w[1], w[0], 0.0
+            col = 6 * b + 3 + k
+            for s in range(n):
+                if group_block[g] and s != b:
+                    is_other = False
+                    for o in others:
+                        if o == s:
+                            is_other = True
+                    if not is_other:
+                        continue
+                for r in range(6):
+                    d = 0.0
+                    for j in range(3):
+                        i = wcol[g, j]
+                        if group_block[g]:
+                            if s == b:
+                                diff = out[i + 1, b, r] - out[0, b, r]
+                            else:
+                                diff = react[i + 1, jb, s, r] - react[0, jb, s, r]
+                        else:
+                            diff = out[i + 1, s, r] - out[0, s, r]
+                            for jj in range(balls.shape[0]):
+                                diff += react[i + 1, jj, s, r] - react[0, jj, s, r]
+                        d += cvec[j] * diff / steps[i]
+                    if s == b and r >= 3:  # -(e_k x A^T M) of the turned moment rows
+                        if k == 0:
+                            d -= (0.0, -m[2], m[1])[r - 3]
+                        elif k == 1:
+                            d -= (m[2], 0.0, -m[0])[r - 3]
+                        else:
+                            d -= (-m[1], m[0], 0.0)[r - 3]
+                    jac[6 * s + r, col] -= f_q * d
+
+
 class CompiledForces:
     """The compiled counterpart of :meth:`BearingConnector._batch_forces` for one connector
     (constant arrays prepared once)."""
@@ -367,6 +423,7 @@ class CompiledForces:
             self.drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * lub.density * np.pi
                                 * b.ball_radius ** 2)
         self._work = {}
+        self._patterns = {}
         # the single-state path (:meth:`single`)
         self.held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
@@ -460,18 +517,24 @@ class CompiledForces:
         if bsz == 1 or threading.current_thread() is not threading.main_thread():
             kernels.race_contacts(*args)
             return w
-        same = np.zeros((bsz, 2), dtype=bool)
-        if same_contacts is not None:
-            same[:] = np.asarray(same_contacts, dtype=bool).reshape(bsz, -1)
-        same[0] = False
-        z = c.shape[1]
-        todo = np.flatnonzero(np.repeat(~same, z, axis=1).ravel())
+        todo, b, k = self._reuse_pattern(bsz, c.shape[1], same_contacts)
         kernels.race_contacts_parallel(*args, todo)
-        if same.any():
-            b, k = np.nonzero(same)
+        if b.size:
             for key in ("force", "moment", "penetration", "load"):
                 w[key][b, k] = w[key][0, k]
         return w
+
+    def _reuse_pattern(self, bsz, z, same_contacts):
+        """(contacts to compute, states and races to copy from state 0) of a ``same_contacts``
+        pattern, cached: the Jacobian passes the same pattern every call."""
+        key = (bsz, None if same_contacts is None else np.asarray(same_contacts, dtype=bool).tobytes())
+        if key not in self._patterns:
+            same = np.zeros((bsz, 2), dtype=bool)
+            if same_contacts is not None:
+                same[:] = np.asarray(same_contacts, dtype=bool).reshape(bsz, -1)
+            same[0] = False
+            self._patterns[key] = (np.flatnonzero(np.repeat(~same, z, axis=1).ravel()), *np.nonzero(same))
+        return self._patterns[key]
 
     def _finish(self, pos, rot, vel, omega, w):
         """Cage, drag and the generalized-force assembly of B states whose ball–race

@@ -25,7 +25,9 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     held coordinates are left out: its rows are zero there, so Newton never changes
     those coordinates and the columns would multiply zero increments. Rotation columns are
     derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
-    which is what Exudyn's Lie-group nodes expect. Forward differences; all perturbed
+    which is what Exudyn's Lie-group nodes expect; the compiled path takes the balls' from
+    their angular velocity columns by the chain rule (:func:`exudyn_bearing.compiled.
+    ball_rotation_columns`), the numpy path (the reference) perturbs them. Forward differences; all perturbed
     states go through ONE batched evaluation (per-call overhead dominates at 32
     contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
     like the slots.
@@ -54,11 +56,13 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     spec = jacobian_columns(con)
     columns, balls, others, ball_slots, coupled = (spec[k] for k in ("columns", "balls", "others", "ball_slots",
                                                                       "coupled"))
-    nb = 1 + len(columns)
-    turn = rotation_matrices(eps_rotation * np.eye(3))  # exp(eps e_k~), k = 0, 1, 2
+    turn = spec["turn"].get(eps_rotation)
+    if turn is None:  # exp(eps e_k~), k = 0, 1, 2
+        turn = spec["turn"].setdefault(eps_rotation, rotation_matrices(eps_rotation * np.eye(3)))
     if con._compiled is not None:  # the same in compiled loops (~1.3 ms of numpy per Jacobian)
         from . import compiled as compiled_glue
 
+        nb = 1 + len(spec["arrays"][0])
         p2, r2 = np.empty((nb,) + pos.shape), np.empty((nb,) + rot.shape)
         v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
         steps = compiled_glue.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl),
@@ -70,7 +74,10 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
         jac = np.empty((n6, n6))
         compiled_glue.jacobian_assemble(out, react, steps, *spec["arrays"][:3], *spec["arrays"][4:], f_q, f_qt,
                                         jac)
+        compiled_glue.ball_rotation_columns(out, react, steps, spec["wcol"], spec["arrays"][4], spec["ball_group"],
+                                            spec["arrays"][6], spec["arrays"][7], np.ascontiguousarray(wl), f_q, jac)
         return jac
+    nb = 1 + len(columns)
     p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
     v2, w2 = np.repeat(vel[None], nb, axis=0), np.repeat(wl[None], nb, axis=0)
     steps = np.empty(len(columns))
@@ -119,6 +126,19 @@ def jacobian_columns(con) -> dict:
               if s not in con.driven}
     columns = [(gi, group, k, which) for gi, group in enumerate(groups) for k in range(6)
                for which in ("q", "v") if k not in frozen.get(int(group[0]), ())]
+    # the compiled path takes the balls' rotation columns from their angular velocity
+    # columns (compiled.ball_rotation_columns): three perturbed states fewer
+    is_ball = [int(group[0]) in ball_slots for group in groups]
+    kept = [c for c in columns if not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]
+    wcol = -np.ones((len(groups), 3), dtype=np.int64)
+    for i, (gi, _group, k, which) in enumerate(kept):
+        if is_ball[gi] and which == "v" and k >= 3:
+            wcol[gi, k - 3] = i
+    ball_group = np.empty(len(balls), dtype=np.int64)
+    index = {int(b): j for j, b in enumerate(balls)}
+    for gi, group in enumerate(groups):
+        for b in group if is_ball[gi] else ():
+            ball_group[index[int(b)]] = gi
     mask = np.zeros((len(groups), con.n_nodes), dtype=np.bool_)
     for gi, group in enumerate(groups):
         mask[gi, group] = True
@@ -130,11 +150,12 @@ def jacobian_columns(con) -> dict:
         return [slot != con.layout["inner"], slot != con.layout["outer"]]
 
     same = np.array([[False, False]] + [unchanged(int(group[0])) if int(group[0]) not in ball_slots
-                                        else [False, False] for _, group, _, _ in columns])
-    arrays = (np.array([c[0] for c in columns], dtype=np.int64), np.array([c[2] for c in columns], dtype=np.int64),
-              np.array([c[3] == "v" for c in columns], dtype=np.bool_), mask, block,
+                                        else [False, False] for _, group, _, _ in kept])
+    arrays = (np.array([c[0] for c in kept], dtype=np.int64), np.array([c[2] for c in kept], dtype=np.int64),
+              np.array([c[3] == "v" for c in kept], dtype=np.bool_), mask, block,
               np.array([int(g[0]) for g in groups], dtype=np.int64), balls.astype(np.int64),
               np.array(others, dtype=np.int64))
     con._jac_spec = dict(columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots,
-                          coupled=coupled, same=same, arrays=arrays)
+                          coupled=coupled, same=same, arrays=arrays, wcol=wcol, ball_group=ball_group,
+                          turn={})
     return con._jac_spec
