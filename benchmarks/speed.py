@@ -129,6 +129,9 @@ def matrix(sim_time, names, law=None, settings=None):
     from exudyn_bearing import simulate
     from exudyn_bearing.errors import BearingSimulationError
 
+    # a process's first run pays one-time costs (numba's thread pool, first dispatches):
+    # 0.3-0.4 s on case (a), which would flatter every ratio to it
+    simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
     rows, wall_a = [], None
     for name in names:
         text, factory, axial, radial, rpm = MATRIX[name]

@@ -382,6 +382,57 @@ def ball_rotation_columns(out, react, steps, wcol, group_block, ball_group, ball
                     jac[6 * s + r, col] -= f_q * d
 
 
+@njit(cache=True, error_model="numpy")
+def race_translation_columns(react, steps, tcol, chain, chain_rows, balls, pos, rot, f_q, f_qt, jac):
+    """Adds the translation columns of the races ``chain`` (node slots) to ``jac`` from the
+    balls' translation columns of :func:`jacobian_states`' states (``tcol[0, k]``, ``tcol[1, k]``:
+    the ball group's position and velocity column k) instead of six more perturbed states per
+    race. A ball-race contact depends on the ball's and the race's positions (and velocities)
+    only through their differences, so moving race s by e_k changes ball j's contact as moving
+    ball j by -e_k: its force F and moment M on the ball (ball rows: -(dF, A_b^T dM)) and its
+    reaction G = -(F, A_s^T (l x F + M)), l = c_j - x_s, on the race (race rows: -dG). ``react``
+    (B, Z, len(chain), 6): each ball's reaction on each chain race before held components were
+    zeroed; ``chain_rows``: 6, or 3 for a race held in rotation (its moment rows stay zero)."""
+    for m in range(chain.shape[0]):
+        s = chain[m]
+        A = rot[s]
+        for kind in range(2):
+            for k in range(3):
+                i = tcol[kind, k]
+                fac = (f_q if kind == 0 else f_qt) / steps[i]
+                col = 6 * s + k
+                for jb in range(balls.shape[0]):
+                    b = balls[jb]
+                    Ab = rot[b]
+                    dF = np.empty(3)
+                    dG = np.empty(3)
+                    F = np.empty(3)
+                    lever = np.empty(3)
+                    for r in range(3):
+                        dF[r] = -(react[i + 1, jb, m, r] - react[0, jb, m, r])
+                        dG[r] = react[i + 1, jb, m, 3 + r] - react[0, jb, m, 3 + r]
+                        F[r] = -react[0, jb, m, r]
+                        lever[r] = pos[b, r] - pos[s, r]
+                    # dM = -A dG - l x dF (- step e_k x F for a position step)
+                    dM = np.empty(3)
+                    for r in range(3):
+                        dM[r] = -(A[r, 0] * dG[0] + A[r, 1] * dG[1] + A[r, 2] * dG[2])
+                    dM[0] -= lever[1] * dF[2] - lever[2] * dF[1]
+                    dM[1] -= lever[2] * dF[0] - lever[0] * dF[2]
+                    dM[2] -= lever[0] * dF[1] - lever[1] * dF[0]
+                    if kind == 0:
+                        e = np.zeros(3)
+                        e[k] = steps[i]
+                        dM[0] -= e[1] * F[2] - e[2] * F[1]
+                        dM[1] -= e[2] * F[0] - e[0] * F[2]
+                        dM[2] -= e[0] * F[1] - e[1] * F[0]
+                    for r in range(3):
+                        jac[6 * b + r, col] += fac * dF[r]
+                        jac[6 * b + 3 + r, col] += fac * (Ab[0, r] * dM[0] + Ab[1, r] * dM[1] + Ab[2, r] * dM[2])
+                    for r in range(chain_rows[m]):
+                        jac[6 * s + r, col] += fac * (react[i + 1, jb, m, r] - react[0, jb, m, r])
+
+
 class CompiledForces:
     """The compiled counterpart of :meth:`BearingConnector._batch_forces` for one connector
     (constant arrays prepared once)."""

@@ -257,7 +257,7 @@ class BearingConnector:
                               pocket_friction_force=None if friction is None else friction[0][0],
                               pocket_friction_loss=0.0 if friction is None else float(np.sum(friction[1][0])))
 
-    def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None):
+    def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None, raw_reactions=None):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
         to the race/cage slots (B, Z, n_nodes, 6), penetration (m) and normal load (N) of
@@ -265,7 +265,10 @@ class BearingConnector:
         forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
         from the compiled path, which is used unless ``details`` are asked for).
         ``same_contacts`` (compiled path): bool (B,) or (B, 2), states (per race) whose
-        ball–race contacts equal state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`)."""
+        ball–race contacts equal state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`).
+        ``raw_reactions``: a dict with ``slots``, which receives ``react`` of those slots
+        (B, Z, len(slots), 6) before the held components are zeroed (the block Jacobian's
+        race columns need the contact moments a held race does not take)."""
         if self._compiled is not None and not details:
             out, react, pen, load = self._compiled(t, pos, rot, vel, omega, same_contacts)
             parts = None
@@ -281,6 +284,8 @@ class BearingConnector:
             parts = (*parts, friction)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
+        if raw_reactions is not None:
+            raw_reactions["react"] = np.ascontiguousarray(react[:, :, raw_reactions["slots"]])
         for slot, what in self.held.items():
             out[:, slot, 3:] = 0.0
             react[:, :, slot, 3:] = 0.0

@@ -70,12 +70,17 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
                                               np.array([eps_position, eps_rotation, eps_velocity, eps_angular]),
                                               turn,
                                               p2, r2, v2, w2)
-        out, react, _, _, _ = con._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"])
+        raw = {"slots": spec["chain"]} if spec["chain"].size else None
+        out, react, _, _, _ = con._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"], raw_reactions=raw)
         jac = np.empty((n6, n6))
         compiled_glue.jacobian_assemble(out, react, steps, *spec["arrays"][:3], *spec["arrays"][4:], f_q, f_qt,
                                         jac)
         compiled_glue.ball_rotation_columns(out, react, steps, spec["wcol"], spec["arrays"][4], spec["ball_group"],
                                             spec["arrays"][6], spec["arrays"][7], np.ascontiguousarray(wl), f_q, jac)
+        if raw is not None:
+            compiled_glue.race_translation_columns(raw["react"], steps, spec["tcol"], spec["chain"],
+                                                   spec["chain_rows"], spec["arrays"][6], pos,
+                                                   np.ascontiguousarray(rot), f_q, f_qt, jac)
         return jac
     nb = 1 + len(columns)
     p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
@@ -130,10 +135,26 @@ def jacobian_columns(con) -> dict:
     # columns (compiled.ball_rotation_columns): three perturbed states fewer
     is_ball = [int(group[0]) in ball_slots for group in groups]
     kept = [c for c in columns if not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]
+    # ... and a race's translation columns from the balls' translation columns: a ball-race
+    # contact depends on the two positions and velocities only through their differences
+    # (compiled.race_translation_columns). Not for the race guiding the cage (its land
+    # force depends on the race), a race held in translation, or a spring-chain cage (no
+    # ball group perturbed as one)
+    chain = []
+    for name in ("inner", "outer") if not coupled else ():
+        slot = con.layout[name]
+        if slot is None or con.held.get(slot, "rotation") != "rotation" or (
+                con.guide is not None and con.guide[0] == name):
+            continue
+        chain.append(slot)
+    kept = [c for c in kept if not (int(c[1][0]) in chain and c[2] < 3)]
     wcol = -np.ones((len(groups), 3), dtype=np.int64)
+    tcol = -np.ones((2, 3), dtype=np.int64)  # the ball group's position and velocity columns
     for i, (gi, _group, k, which) in enumerate(kept):
         if is_ball[gi] and which == "v" and k >= 3:
             wcol[gi, k - 3] = i
+        if is_ball[gi] and k < 3 and not coupled:
+            tcol[int(which == "v"), k] = i
     ball_group = np.empty(len(balls), dtype=np.int64)
     index = {int(b): j for j, b in enumerate(balls)}
     for gi, group in enumerate(groups):
@@ -157,5 +178,7 @@ def jacobian_columns(con) -> dict:
               np.array(others, dtype=np.int64))
     con._jac_spec = dict(columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots,
                           coupled=coupled, same=same, arrays=arrays, wcol=wcol, ball_group=ball_group,
-                          turn={})
+                          turn={}, chain=np.array(chain, dtype=np.int64), tcol=tcol,
+                          chain_rows=np.array([6 if con.held.get(s_) is None else 3 for s_ in chain],
+                                              dtype=np.int64))
     return con._jac_spec
