@@ -132,7 +132,7 @@ def matrix(sim_time, names, law=None, settings=None):
     # a process's first run pays one-time costs (numba's thread pool, first dispatches):
     # 0.3-0.4 s on case (a), which would flatter every ratio to it
     simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
-    rows, wall_a = [], None
+    rows, wall_a, cpu_a = [], None, None
     for name in names:
         text, factory, axial, radial, rpm = MATRIX[name]
         made = None if factory is None else factory()
@@ -146,7 +146,7 @@ def matrix(sim_time, names, law=None, settings=None):
             run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
         except Exception as err:  # noqa: BLE001 - a failing case is a row of the table
             rows.append(f"| {name} | {text} | fails after {time.perf_counter() - start:.1f} s: "
-                        f"{str(err)[:160]} | | | | | | |")
+                        f"{str(err)[:160]} | | | | | | | | |")
             continue
         wall = run.wall_time_s
         nominal = int(round(sim_time / run.solver["step"]))
@@ -154,12 +154,17 @@ def matrix(sim_time, names, law=None, settings=None):
         est = run.error_estimate["kinematic_cage_slip_percent"]
         revs = run.cage_speed * sim_time / (2 * np.pi)
         ratio = f"{wall / wall_a:.2f}" if wall_a else "-"
+        cpu = run.cpu_time_s
+        cpu_a = cpu if name == "a" else cpu_a
+        cpu_ratio = f"{cpu / cpu_a:.2f}" if cpu_a else "-"
         rows.append(f"| {name} | {text} | {wall / sim_time * 0.1:.2f} s ({wall / max(revs, 1e-12):.2f} s per cage rev) "
+                    f"| {cpu / sim_time * 0.1:.2f} s "
                     f"| {run.steps} / {nominal} ({run.solver['step']:.3g} s) | {run.newton_iterations} | {run.jacobian_updates} | "
-                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {'yes' if run.settled else 'no'} | {ratio} |")
-    print(f"| case | scene | wall per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage slip "
-          f"± half-step estimate | settled | wall / (a) |")
-    print("|---|---|---:|---:|---:|---:|---:|---|---:|")
+                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {'yes' if run.settled else 'no'} | {ratio} "
+                    f"| {cpu_ratio} |")
+    print(f"| case | scene | wall per 0.1 s | CPU per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage "
+          f"slip ± half-step estimate | settled | wall / (a) | CPU / (a) |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|")
     print("\n".join(rows))
     print(f"({sim_time:g} s simulated per case, default settings, each from the package's start state; the "
           f"estimate's own run is not in the wall time)")
@@ -172,9 +177,16 @@ def main():
     parser.add_argument("--matrix", action="store_true", help="the heavily-loaded/high-speed case matrix")
     parser.add_argument("--cases", default=",".join(MATRIX), help="matrix cases, comma-separated")
     parser.add_argument("--traction", default=None, help="matrix: ContactLaw(traction=...) for every case")
+    parser.add_argument("--threaded-residual", action="store_true",
+                        help="matrix: the force function's contacts on numba's threads "
+                             "(exudyn_bearing.compiled.THREADED_RESIDUAL)")
     parser.add_argument("--recovery-iterations", type=int, default=None,
                         help="matrix: SolverSettings(step_recovery_iterations=...) for every case")
     args = parser.parse_args()
+    if args.threaded_residual:
+        import exudyn_bearing.compiled
+
+        exudyn_bearing.compiled.THREADED_RESIDUAL = True
     if args.matrix:
         law = ContactLaw(traction=args.traction) if args.traction else None
         settings = None

@@ -148,6 +148,8 @@ class RunInfo:
     steps: int
     newton_iterations: int | None = None
     jacobian_updates: int | None = None
+    #: CPU time of the process over the run (all threads), s: the cost beside the wall time
+    cpu_time_s: float | None = None
 
 
 def _exudyn_settings(settings: SolverSettings, end_time: float):
@@ -244,7 +246,7 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     s = _exudyn_settings(settings, end_time)
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
-    start = _time.perf_counter()
+    start, cpu = _time.perf_counter(), _time.process_time()
     try:
         ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
                               showCausingItems=False)
@@ -261,11 +263,11 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
         exu.config.printToConsole = printing
         for h in handles:
             h.connector.progress = None
-    wall = _time.perf_counter() - start
+    wall, cpu = _time.perf_counter() - start, _time.process_time() - cpu
     sol = mbs.sys.get("dynamicSolver")
     it = getattr(sol, "it", None)
     info = RunInfo(asdict(settings), wall, int(getattr(it, "currentStepIndex", 0) or s.timeIntegration.numberOfSteps),
-                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None))
+                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu)
     if not ok:
         raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
                                      f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
@@ -289,16 +291,16 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
     ti.numberOfSteps = max(1, int(round(end_time / step)))
     for h in handles:
         h.connector.first_non_finite = None
-    start = _time.perf_counter()
+    start, cpu = _time.perf_counter(), _time.process_time()
     try:
         ok = exu.SolveDynamic(mbs, s)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
         raise BearingSimulationError(f"exu.SolveDynamic failed at step {step:g} s{_where(handles, mbs)}: {err}") from err
-    wall = _time.perf_counter() - start
+    wall, cpu = _time.perf_counter() - start, _time.process_time() - cpu
     it = getattr(mbs.sys.get("dynamicSolver"), "it", None)
     info = RunInfo({"solver": str(ti.solverType), "step": step, "user_settings": True}, wall,
                    int(getattr(it, "currentStepIndex", 0) or ti.numberOfSteps),
-                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None))
+                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu)
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not ok or not np.all(np.isfinite(q)):
         raise BearingSimulationError(f"exu.SolveDynamic did not finish (step {step:g} s){_where(handles, mbs)}")
@@ -340,6 +342,9 @@ class SimulationSummary:
 
     #: what produced it (:func:`exudyn_bearing.records.inputs_record`)
     inputs: dict = field(default_factory=dict)
+    #: CPU time of the run, all threads, s (the contact kernels run on numba's threads, so
+    #: wall_time_s can be below it)
+    cpu_time_s: float | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready: the fields (not the results object), ``units`` (the unit of every key)
@@ -401,4 +406,5 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
-                             inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, initial_state=initial_state))
+                             inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, initial_state=initial_state),
+                             info.cpu_time_s)

@@ -74,7 +74,7 @@ def assert_real_png(path, min_bytes=10_000, min_size=(300, 200)):
 
 SIMULATE_KEYS = {"axial", "radial", "rpm", "time", "cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed",
                  "cage_speed_nominal", "settled", "wall_time_s", "steps", "solver", "newton_iterations",
-                 "jacobian_updates", "details", "error_estimate", "power_loss_W", "drive_power_W"}
+                 "jacobian_updates", "details", "error_estimate", "power_loss_W", "drive_power_W", "cpu_time_s"}
 DETAIL_KEYS = {"attitude_yz_deg", "attitude_xz_deg", "max_inner_load", "max_outer_load", "max_inner_slip",
                "max_traction_coefficient"}
 ESTIMATE_KEYS = {"cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",

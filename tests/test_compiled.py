@@ -314,6 +314,21 @@ def test_race_translation_columns_leave_frictionless_balls_without_moment():
     assert np.max(np.abs(jac[np.ix_(moment_rows, cols)])) < 1e-9 * stiff
 
 
+def test_threaded_single_state_equals_serial(monkeypatch):
+    """The force function's contacts on numba's threads (``THREADED_RESIDUAL``, off by
+    default) give the serial numbers, at two times (the per-time inputs are cached)."""
+    import exudyn_bearing.compiled as glue
+
+    _sc, con, q, qt = _scene(axialForce=2200.0, radialForce=2000.0)
+    serial = [con.residual_forces(t, q - con.reference, qt).copy() for t in (0.01, 0.02)]
+    monkeypatch.setattr(glue, "THREADED_RESIDUAL", True)
+    con._compiled._time_inputs = ((np.nan, None),)
+    threaded = [con.residual_forces(t, q - con.reference, qt).copy() for t in (0.01, 0.02)]
+    for a, b in zip(serial, threaded):
+        assert np.max(np.abs(a)) > 1.0
+        np.testing.assert_allclose(b, a, rtol=0, atol=1e-9 * np.max(np.abs(a)))
+
+
 def test_serial_kernel_from_a_thread_equals_parallel():
     """A batch (the Jacobian's states) runs on numba's threads from the main thread and
     serially from another thread: the same numbers."""
