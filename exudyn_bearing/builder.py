@@ -89,17 +89,6 @@ class BearingHandle:
 
         return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
 
-    def RecommendedAbsoluteTolerance(self) -> float:
-        """Newton's absolute tolerance for this bearing, N: a fraction of its largest
-        quasi-static contact load, above the traction rule's resolution
-        (:func:`exudyn_bearing.steprule.newton_absolute_tolerance`; 1e-6 without loads).
-        ``run_solver`` uses the smallest over its bearings unless one is given; set
-        ``simulationSettings.timeIntegration.newton.absoluteTolerance`` to it in your own
-        settings."""
-        from .steprule import MIN_ABSOLUTE_TOLERANCE, newton_absolute_tolerance
-
-        return MIN_ABSOLUTE_TOLERANCE if self.initialLoads is None else newton_absolute_tolerance(self.initialLoads)
-
     def AddSensors(self, mbs, outputs=SENSOR_OUTPUTS, storeInternal: bool = True, writeToFile: bool = False,
                    fileNames: dict | None = None) -> dict:
         """Exudyn sensors of the bearing's outputs (``SensorUserFunction``), for

@@ -1,4 +1,4 @@
-"""The default time step and Newton tolerance of a bearing scene (docs/MODEL.md §10a).
+"""The default time step of a bearing scene (docs/MODEL.md §10a).
 
 The implicit solver holds a step of 1e-4 s on the reference bearing; smaller, lighter balls
 at the same or higher pressure need a smaller one. The step needed follows (an empirical
@@ -42,8 +42,7 @@ import math
 import numpy as np
 
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
-           "NEWTON_LOAD_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
-           "recommended_step", "newton_absolute_tolerance"]
+           "ball_vibration_frequency", "orbit_step_limit", "recommended_step"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
@@ -91,24 +90,3 @@ def recommended_step(bearing, loads, nominal: float = NOMINAL_STEP) -> float:
     n = max(1, math.ceil(w_n * nominal / MAX_VIBRATION_PHASE - 1e-9))
     n = max(n, math.ceil(nominal / orbit_step_limit(bearing, loads) - 1e-9))
     return nominal / n
-
-
-#: Newton's absolute tolerance per N of the largest contact load, - (MODEL.md §10a): above the
-#: compiled traction rule's resolution (its rays switch in steps of ~1e-3 of a contact's
-#: traction, ~1.5e-5 of its load: the deep-groove case at 1 kN radial stalled once at a
-#: residual of 0.009-0.013 N with Q_max ~750 N while Exudyn's relative test asked for 0.0056 N)
-NEWTON_LOAD_RESOLUTION = 3e-5
-#: the absolute tolerance of an unloaded bearing, N (Exudyn's relative test decides there)
-MIN_ABSOLUTE_TOLERANCE = 1e-6
-
-
-def newton_absolute_tolerance(loads) -> float:
-    """Newton's absolute tolerance (residual norm, N) for a bearing whose quasi-static
-    ``loads`` have the largest contact load Q_max: :data:`NEWTON_LOAD_RESOLUTION` Q_max, at
-    least :data:`MIN_ABSOLUTE_TOLERANCE`. Exudyn stops Newton at this residual or at its
-    relative tolerance times the step's first residual, whichever comes first; the first
-    residual grows with the balls' accelerations, so where they are small against the
-    contact loads (small balls, heavy loads) the relative test alone asks for less than the
-    force law resolves, and a step can stall there."""
-    q_max = max(float(np.max(loads.inner_load, initial=0.0)), float(np.max(loads.outer_load, initial=0.0)))
-    return max(NEWTON_LOAD_RESOLUTION * q_max, MIN_ABSOLUTE_TOLERANCE)
