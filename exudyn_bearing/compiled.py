@@ -171,8 +171,8 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
     (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven race's axial
     torque I (dw_ref/dt + (w_ref - w)/tau). ``parallel``: the ball-race contacts on numba's
     threads (:data:`THREADED_RESIDUAL`, :func:`_threaded`; 2 threads: case (a) 143 -> 83 us a
-    call, the deep-groove case with 6 balls 52 -> ~40 us). Returns OK, NON_FINITE (state not finite; nothing computed)
-    or TOO_DEEP (an elastic approach above ``max_penetration`` m)."""
+    call, the deep-groove case with 6 balls 52 -> ~40 us). Returns OK, NON_FINITE (state not
+    finite; nothing computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m)."""
     n = reference.shape[0] // 6
     z = balls.shape[0]
     pos = np.empty((1, n, 3))

@@ -25,11 +25,13 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     held coordinates are left out: its rows are zero there, so Newton never changes
     those coordinates and the columns would multiply zero increments. Rotation columns are
     derivatives with respect to a local rotation increment (A -> A exp(d theta~)),
-    which is what Exudyn's Lie-group nodes expect; the compiled path takes the balls' from
-    their angular velocity columns by the chain rule (:func:`exudyn_bearing.compiled.
-    ball_rotation_columns`), the numpy path (the reference) perturbs them. Forward differences; all perturbed
-    states go through ONE batched evaluation (per-call overhead dominates at 32
-    contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
+    which is what Exudyn's Lie-group nodes expect. The compiled path takes the balls'
+    rotation columns from their angular velocity columns and a race's translation columns
+    from the balls' translation columns by the chain rule
+    (:func:`exudyn_bearing.compiled.ball_rotation_columns`, :func:`~exudyn_bearing.compiled.
+    race_translation_columns`; MODEL.md §10); the numpy path (the reference) perturbs them.
+    Forward differences; all perturbed states go through ONE batched evaluation (per-call
+    overhead dominates at 32 contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
     like the slots.
 
     The velocity steps (``eps_velocity`` m/s, ``eps_angular`` rad/s; default
