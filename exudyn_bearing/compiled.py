@@ -437,9 +437,9 @@ def race_translation_columns(react, steps, tcol, chain, chain_rows, balls, pos, 
                     for r in range(3):
                         dF[r] = -(react[i + 1, jb, m, r] - react[0, jb, m, r])
                         dG[r] = react[i + 1, jb, m, 3 + r] - react[0, jb, m, 3 + r]
-                        F[r] = -react[0, jb, m, r]
+                        F[r] = -react[i + 1, jb, m, r]  # the perturbed force: exact with the lever's step
                         lever[r] = pos[b, r] - pos[s, r]
-                    # dM = -A dG - l x dF (- step e_k x F for a position step)
+                    # dM = -A dG - l x dF (- step e_k x F' for a position step)
                     dM = np.empty(3)
                     for r in range(3):
                         dM[r] = -(A[r, 0] * dG[0] + A[r, 1] * dG[1] + A[r, 2] * dG[2])
@@ -501,7 +501,7 @@ class CompiledForces:
                                 * b.ball_radius ** 2)
         self._work = {}
         self._patterns = {}
-        # ((t, force function), race speeds, applied force, driven rows, threaded) of the last call
+        # ((t, force function), race speeds, applied force, driven rows) of the last call
         self._time_inputs = ((math.nan, None),)
         # the single-state path (:meth:`single`)
         self.held = np.zeros(con.n_nodes, dtype=np.int64)
@@ -529,6 +529,7 @@ class CompiledForces:
         q[:, :3] = pos[0]
         self.single(0.0, q.ravel(), np.zeros(6 * n), np.zeros(6 * n))
         kernels.rotation_matrices(np.zeros((1, 3)))
+        self._time_inputs = ((math.nan, None),)  # the warm-up's t = 0 inputs are not the scene's
 
     def fixed_omega(self, t):
         """Angular velocities (2, 3) of the kinematic races (zero rows for races on a node)."""
@@ -547,15 +548,15 @@ class CompiledForces:
             if con.driven:
                 driven = np.array([[*row, 1.0 / con.speed_tracking_time] for row in con.driven_speeds(t)])
             self._time_inputs = ((t, con.applied_force), self.fixed_omega(t),
-                                 np.asarray(con.applied_force(t), dtype=float), driven,
-                                 THREADED_RESIDUAL and _threaded())
-        _, fixed_omega, applied, driven, threaded = self._time_inputs
+                                 np.asarray(con.applied_force(t), dtype=float), driven)
+        _, fixed_omega, applied, driven = self._time_inputs
         status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self.balls,
                             self.slots, self.cage_slot, self.local_pos, self.local_rot, con.origin, con.rotation,
                             fixed_omega, self.groove, self.conformity, self.sign, *self.physics, *self.tables,
                             *self.cage_args, self.guide_race, *self.guide, applied, self.held, driven,
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
-                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket, threaded)
+                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket,
+                            THREADED_RESIDUAL and _threaded())
         return status, self.out
 
     def _arrays(self, bsz):

@@ -261,9 +261,15 @@ def test_ball_rotation_columns_by_the_chain_rule_match_perturbed_orientations(na
     assert np.max(np.abs(fast[:, cols] - ref[:, cols])) < 2e-2 * np.max(np.abs(ref[:, cols]))
 
 
+SCENES_RACES = SCENES | {
+    # the inner race (a node) guides the cage and keeps its perturbed columns, the free outer race's are chained
+    "inner-guided cage, free outer race": dict(axialForce=600.0, radialForce=200.0, cage=CageModel(guidance="inner"),
+                                               outerRace=races.Free()),
+}
+
+
 @pytest.mark.parametrize("name", ["combined load", "pocket play, free outer race",
-                                  "land friction, outer-guided cage",
-                                  "speed ramp, inner-guided cage, turning outer race"])
+                                  "land friction, outer-guided cage", "inner-guided cage, free outer race"])
 @pytest.mark.parametrize("which", ["q", "v"])
 def test_race_translation_columns_from_the_balls_match_perturbed_races(name, which):
     """The compiled Jacobian takes a race's translation columns from the balls' (a contact
@@ -274,7 +280,8 @@ def test_race_translation_columns_from_the_balls_match_perturbed_races(name, whi
     of the columns' largest entry; 1e-3 m/s gives 2 %): within 2e-3, for a driven inner race
     (moment rows held), a free outer race, and with the cage guided by the other race or by
     this one (then perturbed as before)."""
-    _sc, con, q, qt = _scene(**SCENES[name])
+    _sc, con, q, qt = _scene(**SCENES_RACES[name])
+    assert jacobian_columns(con)["chain"].size
     steps = dict(eps_position=1e-10, eps_rotation=1e-7, eps_velocity=1e-5, eps_angular=1e-5)
     f_q, f_qt = (1.0, 0.0) if which == "q" else (0.0, 1.0)
     fast = block_jacobian(con, 0.01, q, qt, f_q, f_qt, **steps)
@@ -317,17 +324,29 @@ def test_race_translation_columns_leave_frictionless_balls_without_moment():
 
 def test_threaded_single_state_equals_serial(monkeypatch):
     """The force function's contacts on numba's threads (``THREADED_RESIDUAL``, off by
-    default) give the serial numbers, at two times (the per-time inputs are cached)."""
+    default) give the serial numbers; at several times of a speed ramp with a turning outer
+    race, whose per-time inputs (cached per t) change, and each equal to the numpy path."""
+    import numba
+
     import exudyn_bearing.compiled as glue
 
-    _sc, con, q, qt = _scene(axialForce=2200.0, radialForce=2000.0)
-    serial = [con.residual_forces(t, q - con.reference, qt).copy() for t in (0.01, 0.02)]
+    if numba.get_num_threads() < 2:
+        pytest.skip("one numba thread: no threaded path to compare")
+    _sc, con, q, qt = _scene(**SCENES["speed ramp, inner-guided cage, turning outer race"])
+    times = (0.0, 0.01, 0.02, 0.01)
+    serial = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
     monkeypatch.setattr(glue, "THREADED_RESIDUAL", True)
-    con._compiled._time_inputs = ((np.nan, None),)
-    threaded = [con.residual_forces(t, q - con.reference, qt).copy() for t in (0.01, 0.02)]
-    for a, b in zip(serial, threaded):
-        assert np.max(np.abs(a)) > 1.0
+    assert glue._threaded()
+    threaded = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
+    finally:
+        con._compiled = kernel
+    assert np.max(np.abs(serial[2] - serial[0])) > 1e-3 * np.max(np.abs(serial[0]))  # the inputs move with t
+    for a, b, c in zip(serial, threaded, ref):
         np.testing.assert_allclose(b, a, rtol=0, atol=1e-9 * np.max(np.abs(a)))
+        np.testing.assert_allclose(a, c, rtol=0, atol=1e-4 * np.max(np.abs(c)))
 
 
 def test_serial_kernel_from_a_thread_equals_parallel():
