@@ -177,16 +177,9 @@ def main():
     parser.add_argument("--matrix", action="store_true", help="the heavily-loaded/high-speed case matrix")
     parser.add_argument("--cases", default=",".join(MATRIX), help="matrix cases, comma-separated")
     parser.add_argument("--traction", default=None, help="matrix: ContactLaw(traction=...) for every case")
-    parser.add_argument("--threaded-residual", action="store_true",
-                        help="matrix: the force function's contacts on numba's threads "
-                             "(exudyn_bearing.compiled.THREADED_RESIDUAL)")
     parser.add_argument("--recovery-iterations", type=int, default=None,
                         help="matrix: SolverSettings(step_recovery_iterations=...) for every case")
     args = parser.parse_args()
-    if args.threaded_residual:
-        import exudyn_bearing.compiled
-
-        exudyn_bearing.compiled.THREADED_RESIDUAL = True
     if args.matrix:
         law = ContactLaw(traction=args.traction) if args.traction else None
         settings = None

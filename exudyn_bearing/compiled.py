@@ -13,7 +13,6 @@ import math
 import threading
 from pathlib import Path
 
-import numba
 import numpy as np
 from numba import njit
 
@@ -136,21 +135,6 @@ def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, d
                     _add_reaction(react, ib, j, cage_slot, rot, lever, friction[ib, j], no_moment, -1.0)
 
 
-#: Spread a single state's contacts (the force function's) over numba's threads. Off: with
-#: two threads it makes case (a) of docs/heavy_load_matrix.md (16 balls) ~26 % and the
-#: 18-ball spindle ~26 % faster, the 6-ball deep-groove cases not at all, so it moves the
-#: deep-groove/(a) cost ratio that issue 14 bounds from 2.5x to 3.3x (DEVELOPMENT.md §18);
-#: ``benchmarks/speed.py --threaded-residual`` measures it.
-THREADED_RESIDUAL = False
-
-
-def _threaded() -> bool:
-    """Whether this call may spread its contacts over numba's threads: from the main thread
-    with more than one numba thread (a skid-map worker process keeps one; a Dask worker
-    thread runs serially, see :meth:`CompiledForces._contacts`)."""
-    return numba.get_num_threads() > 1 and threading.current_thread() is threading.main_thread()
-
-
 HELD_NONE, HELD_ROTATION, HELD_ALL = 0, 1, 2
 OK, NON_FINITE, TOO_DEEP = 0, 1, 2
 
@@ -162,17 +146,17 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
                drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, applied, held,
                driven,
-               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k, pocket_mu, pocket_slip,
-               parallel):
+               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k, pocket_mu, pocket_slip):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
     guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force (N) on the
     inner race slot, ``held`` components (per slot: HELD_*) dropped, and per ``driven`` row
     (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven race's axial
-    torque I (dw_ref/dt + (w_ref - w)/tau). ``parallel``: the ball-race contacts on numba's
-    threads (:data:`THREADED_RESIDUAL`, :func:`_threaded`; 2 threads: case (a) 143 -> 83 us a
-    call, the deep-groove case with 6 balls 52 -> ~40 us). Returns OK, NON_FINITE (state not
-    finite; nothing computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m)."""
+    torque I (dw_ref/dt + (w_ref - w)/tau). Returns OK, NON_FINITE (state not finite;
+    nothing computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m).
+    Serial: calling the parallel contact kernel from here (2 threads: case (a) 143 -> 83 us
+    a call) made Dask worker processes crash once this module was recompiled against a cached
+    contact module (DEVELOPMENT.md §18)."""
     n = reference.shape[0] // 6
     z = balls.shape[0]
     pos = np.empty((1, n, 3))
@@ -205,17 +189,10 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
             w[0, j, i] = omega[0, balls[j], i]
     force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
     pen3 = penetration.reshape(1, 2, z)
-    if parallel:
-        kernels.race_contacts_parallel(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius,
-                                       pitch_diameter, e_prime, ball_mass, damping_ratio, traction, spin_moment,
-                                       min_film, eta0, c_p, max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32,
-                                       w32, rho64, w64, force, moment, pen3, load.reshape(1, 2, z), lam_s, kap_e,
-                                       rr_width, th_k, np.arange(2 * z))
-    else:
-        kernels.race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter,
-                              e_prime, ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p,
-                              max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment,
-                              pen3, load.reshape(1, 2, z), lam_s, kap_e, rr_width, th_k)
+    kernels.race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter, e_prime,
+                          ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus, c1_coef,
+                          cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, pen3,
+                          load.reshape(1, 2, z), lam_s, kap_e, rr_width, th_k)
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
     kernels.cage_and_drag(c, v, cage_kind, pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(),
@@ -555,8 +532,7 @@ class CompiledForces:
                             fixed_omega, self.groove, self.conformity, self.sign, *self.physics, *self.tables,
                             *self.cage_args, self.guide_race, *self.guide, applied, self.held, driven,
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
-                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket,
-                            THREADED_RESIDUAL and _threaded())
+                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket)
         return status, self.out
 
     def _arrays(self, bsz):

@@ -322,33 +322,6 @@ def test_race_translation_columns_leave_frictionless_balls_without_moment():
     assert np.max(np.abs(jac[np.ix_(moment_rows, cols)])) < 1e-9 * stiff
 
 
-def test_threaded_single_state_equals_serial(monkeypatch):
-    """The force function's contacts on numba's threads (``THREADED_RESIDUAL``, off by
-    default) give the serial numbers; at several times of a speed ramp with a turning outer
-    race, whose per-time inputs (cached per t) change, and each equal to the numpy path."""
-    import numba
-
-    import exudyn_bearing.compiled as glue
-
-    if numba.get_num_threads() < 2:
-        pytest.skip("one numba thread: no threaded path to compare")
-    _sc, con, q, qt = _scene(**SCENES["speed ramp, inner-guided cage, turning outer race"])
-    times = (0.0, 0.01, 0.02, 0.01)
-    serial = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
-    monkeypatch.setattr(glue, "THREADED_RESIDUAL", True)
-    assert glue._threaded()
-    threaded = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
-    kernel, con._compiled = con._compiled, None
-    try:
-        ref = [con.residual_forces(t, q - con.reference, qt).copy() for t in times]
-    finally:
-        con._compiled = kernel
-    assert np.max(np.abs(serial[2] - serial[0])) > 1e-3 * np.max(np.abs(serial[0]))  # the inputs move with t
-    for a, b, c in zip(serial, threaded, ref):
-        np.testing.assert_allclose(b, a, rtol=0, atol=1e-9 * np.max(np.abs(a)))
-        np.testing.assert_allclose(a, c, rtol=0, atol=1e-4 * np.max(np.abs(c)))
-
-
 def test_serial_kernel_from_a_thread_equals_parallel():
     """A batch (the Jacobian's states) runs on numba's threads from the main thread and
     serially from another thread: the same numbers."""
