@@ -179,14 +179,19 @@ def main():
     parser.add_argument("--traction", default=None, help="matrix: ContactLaw(traction=...) for every case")
     parser.add_argument("--recovery-iterations", type=int, default=None,
                         help="matrix: SolverSettings(step_recovery_iterations=...) for every case")
+    parser.add_argument("--no-predictor", action="store_true",
+                        help="matrix: SolverSettings(predictor=False), Exudyn's zero-acceleration Newton start")
     args = parser.parse_args()
     if args.matrix:
         law = ContactLaw(traction=args.traction) if args.traction else None
         settings = None
-        if args.recovery_iterations is not None:
+        if args.recovery_iterations is not None or args.no_predictor:
             from exudyn_bearing import SolverSettings
 
-            settings = SolverSettings(progress=False, step_recovery_iterations=args.recovery_iterations)
+            options = {"predictor": False} if args.no_predictor else {}
+            if args.recovery_iterations is not None:
+                options["step_recovery_iterations"] = args.recovery_iterations
+            settings = SolverSettings(progress=False, **options)
         matrix(args.time, [c.strip() for c in args.cases.split(",") if c.strip()], law, settings)
         return
     # interleaved repeats: a burst of load on the shared machine hits all scenes alike

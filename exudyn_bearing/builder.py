@@ -28,6 +28,7 @@ from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
 from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_state, race_adapter,
                     ring_inertia)
+from .predictor import install_predictor
 from .quasidynamic import AzimuthStates
 from .start import choose_inner_control, jones_axis_start, raceway_control, steady_start
 
@@ -414,6 +415,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     # (implicit solvers) gets it too; run_solver(jacobian='exudyn') removes it
     contact = mbs.AddObject(ObjectGenericODE2(nodeNumbers=nodes, forceUserFunction=force_user_function,
                                               jacobianUserFunction=jacobian_user_function))
+    # the Newton start from the previous acceleration (MODEL.md §10b), for plain SolveDynamic
+    # scenes too; SolverSettings(predictor=False) turns it off for a run_solver run
+    install_predictor(mbs, nodes)
     sensor = None
     if recordStates:
         indices = []

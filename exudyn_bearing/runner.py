@@ -15,6 +15,7 @@ from .bearing import BallDrag, Bearing
 from .cage import CageModel
 from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .predictor import VARIABLE as PREDICTOR_VARIABLE
 from .records import inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
@@ -59,6 +60,10 @@ class SolverSettings:
         failing step every 10 steps with 7 (63.9 s wall per 0.1 s) and not with 5 (about
         12 s); with 4 the deep-groove case at 1 kN radial stays at the halved step after
         its start transient (2x its steps); docs/heavy_load_matrix.md.
+    predictor : bool
+        Implicit solvers: start each step's Newton iteration from the previous step's
+        acceleration of the bearings' nodes (:mod:`exudyn_bearing.predictor`, MODEL.md §10b)
+        instead of Exudyn's zero acceleration. Same convergence test, fewer iterations.
     progress : bool
         Print where a run is (simulated time, wall time, time to go) to stderr every
         :data:`PROGRESS_PERIOD` s of wall time; runs shorter than that print nothing.
@@ -75,6 +80,7 @@ class SolverSettings:
     output_step: float = 1e-4
     newton_contractivity: float = 0.5
     step_recovery_iterations: int = 5
+    predictor: bool = True
     progress: bool = True
 
     def __post_init__(self) -> None:
@@ -244,6 +250,10 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
         h.connector.first_non_finite = None
         h.connector.progress = _Progress(end_time) if settings.progress and h is handles[0] else None
     s = _exudyn_settings(settings, end_time)
+    predictor = mbs.variables.get(PREDICTOR_VARIABLE)
+    predicting = getattr(predictor, "enabled", None)
+    if predictor is not None:
+        predictor.enabled = settings.predictor
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
     start, cpu = _time.perf_counter(), _time.process_time()
@@ -261,6 +271,8 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
                                      + (_ADVICE if settings.implicit and not overloaded else "")) from err
     finally:
         exu.config.printToConsole = printing
+        if predictor is not None:
+            predictor.enabled = predicting
         for h in handles:
             h.connector.progress = None
     wall, cpu = _time.perf_counter() - start, _time.process_time() - cpu

@@ -41,11 +41,15 @@ def test_rk44_estimate_matches_fourth_order():
 
 def test_generalized_alpha_estimate_is_half_the_error():
     """Default generalized-alpha at 1e-4 s over 20 ms: actual / estimate 2.1-2.3 measured
-    with the paper's law, 1.19 with the default limited law; band 1.0-3.5 (order 2 would
-    give 1.31, order 1 1.75): the README tells users to read twice the estimate as the
-    error of a generalized-alpha run."""
+    with the paper's law, 1.19 with the default limited law, 1.45 with Exudyn's
+    zero-acceleration Newton start (session 15); with the predicted start (MODEL.md §10b)
+    the run's error is 15x smaller (kinematic slip 5e-4 against 7.8e-3 pp, cage speed 5e-4
+    against 6.3e-3 rad/s), no longer in the asymptotic range (the h/8 and h/16 references
+    differ by a fifth of it), and the ratios are 0.65-0.78 (kinematic slip) and 1.9-2.3
+    (cage speed and slip). Band 0.5-3.5 (order 2 would give 1.31, order 1 1.75): the
+    README tells users to read twice the estimate as the error of a generalized-alpha run."""
     for key, ratio in ratios(SolverSettings(), 0.02).items():
-        assert 1.0 < ratio < 3.5, (key, ratio)
+        assert 0.5 < ratio < 3.5, (key, ratio)
 
 
 @pytest.mark.parametrize("kwargs, name", [

@@ -1,0 +1,197 @@
+"""A constant-acceleration start for the Newton iteration of Exudyn's implicit solvers
+(MODEL.md §10b).
+
+Exudyn's generalized-alpha step starts Newton from zero acceleration. The balls orbit and
+precess at steady accelerations (hundreds of m/s², ~1e4 rad/s²), so that start lies
+a_n/β' inside the stiff Hertz and traction laws (an initial residual of ~57 N on the
+deep-groove case of docs/heavy_load_matrix.md, where a converged step leaves 0.006 N) and
+Newton crosses the traction's knee on its way back (docs/DEVELOPMENT.md §18).
+
+:class:`NewtonPredictor` replaces Newton's *first iterate* for the bearings' nodes by the
+state one Exudyn increment ``δ = a_n / β'`` from the start: q + δ for translations, q ∘ exp(δ)
+for the Lie-group rotations (Exudyn's own composition), v + γ'δ, a = a_n. Exactly that state:
+Newton's later increments move q, v and a together and would keep any mismatch. The first
+iterate, not the start, because Exudyn measures convergence relative to the residual at the
+start: left at the zero-acceleration start, that residual and so the convergence test are
+what they were without the predictor, and only the path to them is shorter.
+
+Not predicted: a solve's first step (its start acceleration is Exudyn's initial M⁻¹f, with
+the start state's transients) and a step tried again after a cut. Installed as the system's
+``PreNewtonResidualUserFunction``, so a plain ``exu.SolveDynamic`` gets it too; a function
+the scene set before the bearing was created is chained, one set after it replaces the
+predictor (results unchanged, slower). Only what moves with the bearing is shifted: the
+nodes of its balls, cage and races (Lie-group rotation-vector nodes, 6 coordinates each).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+__all__ = ["NewtonPredictor", "compose_rotation_vectors", "install_predictor"]
+
+#: key of the predictor in ``mbs.variables`` (one per system, shared by its bearings)
+VARIABLE = "exudyn_bearing.predictor"
+
+
+@njit(cache=True)
+def _compose(theta, omega, out):
+    """Exudyn's ``EXUlie::CompositionRotationVector`` for rows of ``theta`` and ``omega``."""
+    for k in range(theta.shape[0]):
+        t0, t1, t2 = theta[k, 0], theta[k, 1], theta[k, 2]
+        w0, w1, w2 = omega[k, 0], omega[k, 1], omega[k, 2]
+        h0 = 0.5 * math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+        h1 = 0.5 * math.sqrt(w0 * w0 + w1 * w1 + w2 * w2)
+        c0, c1 = math.cos(h0), math.cos(h1)
+        s0 = math.sin(h0) / h0 if h0 > 0.0 else 1.0
+        s1 = math.sin(h1) / h1 if h1 > 0.0 else 1.0
+        x = c0 * c1 - 0.25 * s0 * s1 * (t0 * w0 + t1 * w1 + t2 * w2)
+        a, b, c = s0 * c1, c0 * s1, 0.5 * s0 * s1
+        r0 = a * t0 + b * w0 + c * (t1 * w2 - t2 * w1)
+        r1 = a * t1 + b * w1 + c * (t2 * w0 - t0 * w2)
+        r2 = a * t2 + b * w2 + c * (t0 * w1 - t1 * w0)
+        norm = math.sqrt(r0 * r0 + r1 * r1 + r2 * r2)
+        # (x, rho/2) is the product quaternion: 2 atan2(|rho|/2, x) is Exudyn's angle
+        # pi - 2 atan2(x, sqrt(1 - x²)) without its loss of digits at small angles
+        angle = 2.0 * math.atan2(0.5 * norm, x)
+        scale = angle / norm if norm > 0.0 else 0.0
+        out[k, 0], out[k, 1], out[k, 2] = scale * r0, scale * r1, scale * r2
+
+
+def compose_rotation_vectors(theta, omega):
+    """Rotation vectors of R(θ) exp(ω̃): the rotations ``theta`` (n, 3) composed with the
+    local incremental rotations ``omega`` (n, 3), by the formula of Exudyn's Lie-group
+    update (``EXUlie::CompositionRotationVector``, Holzinger 2021), so that the predicted
+    state is exactly one Exudyn Newton increment away from the start (MODEL.md §10b)."""
+    theta = np.ascontiguousarray(theta, dtype=float).reshape(-1, 3)
+    omega = np.ascontiguousarray(omega, dtype=float).reshape(-1, 3)
+    out = np.empty_like(theta)
+    _compose(theta, omega, out)
+    return out
+
+
+class NewtonPredictor:
+    """Exudyn ``PreNewtonResidualUserFunction`` that replaces the first Newton iterate of
+    each implicit step by the constant-acceleration state of the bearings' nodes (module
+    docstring). ``enabled`` False leaves Exudyn's iteration untouched."""
+
+    def __init__(self, chained=None):
+        self.nodes: list[int] = []
+        self.enabled = True
+        self.chained = chained
+        self.shifts = 0
+        self._indices = None
+        self._pending = None
+        self._solver = self._constants = None
+        self._step_start = math.nan
+
+    def add_nodes(self, nodes) -> None:
+        self.nodes.extend(int(n) for n in nodes)
+        self._indices = None
+
+    def _coordinates(self, mbs):
+        if self._indices is None or self._indices[0].size != 6 * len(self.nodes):
+            starts = np.array([mbs.GetNodeODE2Index(n) for n in self.nodes], dtype=np.intp)
+            rows = (starts[:, None] + np.arange(6)).ravel()
+            rot = (starts[:, None] + np.arange(3, 6)).ravel()
+            ref = np.asarray(mbs.systemData.GetODE2Coordinates(configuration=_config().Reference), dtype=float)
+            self._indices = (rows, rot, ref[rot].reshape(-1, 3))
+        return self._indices
+
+    def __call__(self, mbs, t, newtonIt, discontinuousIt):
+        if self.chained is not None:
+            self.chained(mbs, t, newtonIt, discontinuousIt)
+        if not self.enabled or not self.nodes:
+            return
+        if newtonIt == 0:
+            self._pending = self._predict(mbs, t)
+        elif newtonIt == 1 and self._pending is not None:
+            rows, q_new, v_new, a_new = self._pending
+            self._pending = None
+            data = mbs.systemData
+            config = _config().Current
+            q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
+            v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
+            a = np.array(data.GetODE2Coordinates_tt(configuration=config), dtype=float)
+            q[rows], v[rows], a[rows] = q_new, v_new, a_new
+            data.SetODE2Coordinates(q, configuration=config)
+            data.SetODE2Coordinates_t(v, configuration=config)
+            data.SetODE2Coordinates_tt(a, configuration=config)
+            self.shifts += 1
+        else:
+            self._pending = None
+
+    def _predict(self, mbs, t):
+        """The constant-acceleration state of the bearing rows at the step's start (called
+        with Exudyn's zero-acceleration start in place), or None outside a dynamic step."""
+        solver = mbs.sys.get("dynamicSolver")
+        if solver is not self._solver:  # a new solve: its integration constants, once
+            self._solver, self._constants = solver, _constants(solver)
+        if self._constants is None:
+            return None
+        it = solver.it
+        h = float(it.currentStepSize)
+        if not (h > 0.0) or abs(float(it.currentTime) - t) > 1e-9 * max(1.0, abs(t)):
+            return None  # not this solver's step (e.g. a static solve after a dynamic one)
+        step_start, tiny = t - h, 1e-9 * max(h, abs(t) * 1e-6)
+        if step_start <= float(it.startTime) + tiny or abs(step_start - self._step_start) <= tiny:
+            # the first step of a solve starts from Exudyn's initial accelerations (M⁻¹f of
+            # the start state: transients, not the motion); a step tried again after a cut
+            # (same start) gets Exudyn's own start: one predicted attempt per step
+            self._step_start = step_start
+            return None
+        self._step_start = step_start
+        rows, rot, ref_rot = self._coordinates(mbs)
+        data = mbs.systemData
+        config = _config()
+        a_start = np.asarray(data.GetODE2Coordinates_tt(configuration=config.Current), dtype=float)[rows]
+        if np.any(a_start != 0.0):
+            return None  # not a fresh zero-acceleration start
+        q = np.asarray(data.GetODE2Coordinates(configuration=config.Current), dtype=float)[rows]
+        v = np.asarray(data.GetODE2Coordinates_t(configuration=config.Current), dtype=float)[rows]
+        a_n = np.asarray(data.GetODE2Coordinates_tt(configuration=config.StartOfStep), dtype=float)[rows]
+        if not (np.all(np.isfinite(a_n)) and np.all(np.isfinite(q))):
+            return None
+        beta, gamma, alpha_m, alpha_f = self._constants
+        beta_prime = (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f))
+        gamma_prime = gamma / (h * beta)
+        delta = a_n / beta_prime
+        q_new = (q + delta).reshape(-1, 2, 3)
+        q_new[:, 1] = compose_rotation_vectors(ref_rot + q.reshape(-1, 2, 3)[:, 1],
+                                               delta.reshape(-1, 2, 3)[:, 1]) - ref_rot
+        return rows, q_new.ravel(), v + gamma_prime * delta, a_n
+
+
+def _constants(solver):
+    """(β, γ, α_m, α_f) of an implicit second-order Exudyn solver, None for other solvers."""
+    import exudyn as exu
+
+    if not isinstance(solver, exu.MainSolverImplicitSecondOrder):
+        return None
+    return float(solver.newmarkBeta), float(solver.newmarkGamma), float(solver.alphaM), float(solver.alphaF)
+
+
+def _config():
+    import exudyn as exu
+
+    return exu.ConfigurationType
+
+
+def install_predictor(mbs, nodes) -> NewtonPredictor:
+    """Add ``nodes`` (Lie-group rotation-vector rigid-body nodes of a bearing) to the
+    system's :class:`NewtonPredictor`, creating and installing it as the system's
+    ``PreNewtonResidualUserFunction`` on first use (a function already set is chained)."""
+    predictor = mbs.variables.get(VARIABLE)
+    if not isinstance(predictor, NewtonPredictor):
+        try:  # Exudyn 1.13: 0, or {'function': f, 'type': 'Python'}
+            existing = mbs.GetPreNewtonResidualUserFunction()
+        except Exception:  # noqa: BLE001 - older Exudyn without the getter: nothing to chain
+            existing = None
+        if isinstance(existing, dict):
+            existing = existing.get("function")
+        predictor = NewtonPredictor(existing if callable(existing) else None)
+        mbs.variables[VARIABLE] = predictor
+        mbs.SetPreNewtonResidualUserFunction(predictor)
+    predictor.add_nodes(nodes)
+    return predictor
