@@ -84,7 +84,7 @@ class NewtonPredictor:
         self._indices = None
         self._pending = None
         self._solver = self._constants = None
-        self._step_start = math.nan
+        self._step_start = self._h = math.nan
 
     def add_nodes(self, nodes) -> None:
         self.nodes.extend(int(n) for n in nodes)
@@ -107,8 +107,13 @@ class NewtonPredictor:
         if newtonIt == 0:
             self._pending = self._predict(mbs, t)
         elif newtonIt == 1 and self._pending is not None:
-            rows, q_new, v_new, a_new = self._pending
+            rows, q_new, v_new, a_new, new_step = self._pending
             self._pending = None
+            if new_step:
+                # Exudyn keeps the last Jacobian across a change of step size, whose mass
+                # part scales with 1/h²: from the predicted iterate that stale matrix
+                # diverges (contraction 2 after the step doubled), so take a fresh one here
+                self._solver.conv.jacobianUpdateRequested = True
             data = mbs.systemData
             config = _config().Current
             q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
@@ -127,13 +132,14 @@ class NewtonPredictor:
         with Exudyn's zero-acceleration start in place), or None outside a dynamic step."""
         solver = mbs.sys.get("dynamicSolver")
         if solver is not self._solver:  # a new solve: its integration constants, once
-            self._solver, self._constants = solver, _constants(solver)
+            self._solver, self._constants, self._h = solver, _constants(solver), math.nan
         if self._constants is None:
             return None
         it = solver.it
         h = float(it.currentStepSize)
         if not (h > 0.0) or abs(float(it.currentTime) - t) > 1e-9 * max(1.0, abs(t)):
             return None  # not this solver's step (e.g. a static solve after a dynamic one)
+        new_step, self._h = h != self._h, h
         step_start, tiny = t - h, 1e-9 * max(h, abs(t) * 1e-6)
         if step_start <= float(it.startTime) + tiny or abs(step_start - self._step_start) <= tiny:
             # the first step of a solve starts from Exudyn's initial accelerations (M⁻¹f of
@@ -160,7 +166,7 @@ class NewtonPredictor:
         q_new = (q + delta).reshape(-1, 2, 3)
         q_new[:, 1] = compose_rotation_vectors(ref_rot + q.reshape(-1, 2, 3)[:, 1],
                                                delta.reshape(-1, 2, 3)[:, 1]) - ref_rot
-        return rows, q_new.ravel(), v + gamma_prime * delta, a_n
+        return rows, q_new.ravel(), v + gamma_prime * delta, a_n, new_step
 
 
 def _constants(solver):
