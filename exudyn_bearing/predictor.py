@@ -59,6 +59,34 @@ def _compose(theta, omega, out):
         out[k, 0], out[k, 1], out[k, 2] = scale * r0, scale * r1, scale * r2
 
 
+@njit(cache=True)
+def _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma_prime, a_out):
+    """In place on the full coordinate vectors: the nodes at ``starts`` (6 coordinates each:
+    displacement, rotation vector) moved by one Exudyn increment δ = a_n/β' (module
+    docstring); their accelerations a_n into ``a_out``. False where a value is not finite."""
+    delta = np.empty((1, 3))
+    theta = np.empty((1, 3))
+    out = np.empty((1, 3))
+    for k in range(starts.shape[0]):
+        s = starts[k]
+        for i in range(6):
+            if not (math.isfinite(q[s + i]) and math.isfinite(v[s + i]) and math.isfinite(a_n[s + i])):
+                return False
+        for i in range(6):
+            d = a_n[s + i] / beta_prime
+            v[s + i] += gamma_prime * d
+            a_out[s + i] = a_n[s + i]
+            if i < 3:
+                q[s + i] += d
+            else:
+                delta[0, i - 3] = d
+                theta[0, i - 3] = ref_rot[k, i - 3] + q[s + i]
+        _compose(theta, delta, out)
+        for i in range(3):
+            q[s + 3 + i] = out[0, i] - ref_rot[k, i]
+    return True
+
+
 def compose_rotation_vectors(theta, omega):
     """Rotation vectors of R(θ) exp(ω̃): the rotations ``theta`` (n, 3) composed with the
     local incremental rotations ``omega`` (n, 3), by the formula of Exudyn's Lie-group
@@ -91,12 +119,15 @@ class NewtonPredictor:
         self._indices = None
 
     def _coordinates(self, mbs):
-        if self._indices is None or self._indices[0].size != 6 * len(self.nodes):
+        if self._indices is None or self._indices[0].size != len(self.nodes):
             starts = np.array([mbs.GetNodeODE2Index(n) for n in self.nodes], dtype=np.intp)
-            rows = (starts[:, None] + np.arange(6)).ravel()
             rot = (starts[:, None] + np.arange(3, 6)).ravel()
             ref = np.asarray(mbs.systemData.GetODE2Coordinates(configuration=_config().Reference), dtype=float)
-            self._indices = (rows, rot, ref[rot].reshape(-1, 3))
+            rows = (starts[:, None] + np.arange(6)).ravel()
+            # the bearings' nodes are the whole system (the usual scene): the predicted
+            # vectors are set as they are, no other item's Newton iterate to keep
+            everything = np.array_equal(np.sort(rows), np.arange(ref.size))
+            self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything)
         return self._indices
 
     def __call__(self, mbs, t, newtonIt, discontinuousIt):
@@ -107,7 +138,7 @@ class NewtonPredictor:
         if newtonIt == 0:
             self._pending = self._predict(mbs, t)
         elif newtonIt == 1 and self._pending is not None:
-            rows, q_new, v_new, a_new, new_step = self._pending
+            q_new, v_new, a_new, new_step = self._pending
             self._pending = None
             if new_step:
                 # Exudyn keeps the last Jacobian across a change of step size, whose mass
@@ -116,20 +147,24 @@ class NewtonPredictor:
                 self._solver.conv.jacobianUpdateRequested = True
             data = mbs.systemData
             config = _config().Current
-            q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
-            v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
-            a = np.array(data.GetODE2Coordinates_tt(configuration=config), dtype=float)
-            q[rows], v[rows], a[rows] = q_new, v_new, a_new
-            data.SetODE2Coordinates(q, configuration=config)
-            data.SetODE2Coordinates_t(v, configuration=config)
-            data.SetODE2Coordinates_tt(a, configuration=config)
+            _, rows, _, everything = self._indices
+            if not everything:  # other items keep Newton's first iterate
+                q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
+                v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
+                a = np.array(data.GetODE2Coordinates_tt(configuration=config), dtype=float)
+                q[rows], v[rows], a[rows] = q_new[rows], v_new[rows], a_new[rows]
+                q_new, v_new, a_new = q, v, a
+            data.SetODE2Coordinates(q_new, configuration=config)
+            data.SetODE2Coordinates_t(v_new, configuration=config)
+            data.SetODE2Coordinates_tt(a_new, configuration=config)
             self.shifts += 1
         else:
             self._pending = None
 
     def _predict(self, mbs, t):
-        """The constant-acceleration state of the bearing rows at the step's start (called
-        with Exudyn's zero-acceleration start in place), or None outside a dynamic step."""
+        """The full (q, v, a) vectors with the bearings' nodes at their constant-acceleration
+        state (called with Exudyn's zero-acceleration start in place), and whether the step
+        size changed; None outside a dynamic step."""
         solver = mbs.sys.get("dynamicSolver")
         if solver is not self._solver:  # a new solve: its integration constants, once
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan
@@ -148,25 +183,19 @@ class NewtonPredictor:
             self._step_start = step_start
             return None
         self._step_start = step_start
-        rows, rot, ref_rot = self._coordinates(mbs)
+        starts, _, ref_rot, _ = self._coordinates(mbs)
         data = mbs.systemData
         config = _config()
-        a_start = np.asarray(data.GetODE2Coordinates_tt(configuration=config.Current), dtype=float)[rows]
-        if np.any(a_start != 0.0):
-            return None  # not a fresh zero-acceleration start
-        q = np.asarray(data.GetODE2Coordinates(configuration=config.Current), dtype=float)[rows]
-        v = np.asarray(data.GetODE2Coordinates_t(configuration=config.Current), dtype=float)[rows]
-        a_n = np.asarray(data.GetODE2Coordinates_tt(configuration=config.StartOfStep), dtype=float)[rows]
-        if not (np.all(np.isfinite(a_n)) and np.all(np.isfinite(q))):
-            return None
+        # Exudyn's start: the previous step's q and v advanced, zero acceleration everywhere
+        q = np.array(data.GetODE2Coordinates(configuration=config.Current), dtype=float)
+        v = np.array(data.GetODE2Coordinates_t(configuration=config.Current), dtype=float)
+        a_n = np.asarray(data.GetODE2Coordinates_tt(configuration=config.StartOfStep), dtype=float)
+        a = np.zeros_like(q)
         beta, gamma, alpha_m, alpha_f = self._constants
         beta_prime = (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f))
-        gamma_prime = gamma / (h * beta)
-        delta = a_n / beta_prime
-        q_new = (q + delta).reshape(-1, 2, 3)
-        q_new[:, 1] = compose_rotation_vectors(ref_rot + q.reshape(-1, 2, 3)[:, 1],
-                                               delta.reshape(-1, 2, 3)[:, 1]) - ref_rot
-        return rows, q_new.ravel(), v + gamma_prime * delta, a_n, new_step
+        if not _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma / (h * beta), a):
+            return None
+        return q, v, a, new_step
 
 
 def _constants(solver):
