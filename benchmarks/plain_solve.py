@@ -1,8 +1,9 @@
 """A user's own Exudyn scene solved by ``exu.SolveDynamic`` with ``exu.SimulationSettings``
 against the package's ``run_solver`` on the same scene, wall time measured in one run
 (issue 16: within 1.3x). The builder installs the block Jacobian on the contact object, so
-the plain solve gets it too; Exudyn's default Newton tolerances are loosened to 1e-4 / 1e-6
-as the README says (its 1e-8 default sits below the float32 traction kernel's rounding).
+the plain solve gets it too, and the Newton start of MODEL.md §10b; Exudyn's default Newton
+tolerances are set as the README says (relative 1e-4, absolute
+``brg.RecommendedAbsoluteTolerance()``: its 1e-8 sits below the traction rule's resolution).
 
     python benchmarks/plain_solve.py [--time 0.05] [--case reference|deep-groove]
 """
@@ -45,7 +46,8 @@ def main():
     ss.timeIntegration.endTime = args.time
     ss.timeIntegration.numberOfSteps = int(round(args.time / step))
     ss.timeIntegration.newton.relativeTolerance = 1e-4
-    ss.timeIntegration.newton.absoluteTolerance = 1e-6
+    ss.timeIntegration.newton.absoluteTolerance = h.RecommendedAbsoluteTolerance()
+    ss.timeIntegration.adaptiveStepRecoveryIterations = 5
     ss.timeIntegration.verboseMode = 0
     ss.solution.sensors.writePeriod = 1e-4  # run_solver's output period: the state sensor records at it
     start = time.perf_counter()

@@ -90,6 +90,16 @@ class BearingHandle:
 
         return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
 
+    def RecommendedAbsoluteTolerance(self) -> float:
+        """Newton's absolute tolerance for this bearing, N: 3e-5 of its largest contact load
+        at the start state, the resolution of the compiled traction rule (MODEL.md §10b;
+        :func:`exudyn_bearing.steprule.recommended_absolute_tolerance`). ``run_solver`` uses
+        the smallest over its bearings unless one is given; for ``exu.SolveDynamic`` set
+        ``timeIntegration.newton.absoluteTolerance`` to it."""
+        from .steprule import MIN_ABSOLUTE_TOLERANCE, recommended_absolute_tolerance
+
+        return MIN_ABSOLUTE_TOLERANCE if self.initialLoads is None else recommended_absolute_tolerance(self.initialLoads)
+
     def AddSensors(self, mbs, outputs=SENSOR_OUTPUTS, storeInternal: bool = True, writeToFile: bool = False,
                    fileNames: dict | None = None) -> dict:
         """Exudyn sensors of the bearing's outputs (``SensorUserFunction``), for

@@ -115,11 +115,13 @@ class NewtonPredictor:
         self._step_start = self._h = math.nan
 
     def add_nodes(self, nodes) -> None:
-        self.nodes.extend(int(n) for n in nodes)
+        """Predict ``nodes`` too; each node once (bearings on one shaft share its node, and
+        a node moved twice would leave q, v and a inconsistent)."""
+        self.nodes.extend(n for n in dict.fromkeys(int(n) for n in nodes) if n not in self.nodes)
         self._indices = None
 
     def _coordinates(self, mbs):
-        if self._indices is None or self._indices[0].size != len(self.nodes):
+        if self._indices is None:
             starts = np.array([mbs.GetNodeODE2Index(n) for n in self.nodes], dtype=np.intp)
             rot = (starts[:, None] + np.arange(3, 6)).ravel()
             ref = np.asarray(mbs.systemData.GetODE2Coordinates(configuration=_config().Reference), dtype=float)

@@ -43,9 +43,12 @@ class SolverSettings:
         uniform to 0.7 s at about the same cost (docs/work_precision).
     relative_tolerance, absolute_tolerance : float
         Newton (implicit; Exudyn's residual norm relative to the step's initial residual,
-        and in N) or error (DOPRI5) tolerances. 1e-4 by default (docs/work_precision, 1.3 kN
-        at 1e-4 s: kinematic cage slip error 2.9e-3 pp at 1e-4 and at 1e-6, the step's
-        error dominates; 430 instead of 611 Newton iterations; 1e-3: 2.5e-2 pp).
+        and in N) or error (DOPRI5) tolerances; Newton stops at whichever it meets first.
+        Relative 1e-4 by default (docs/work_precision, 1.3 kN at 1e-4 s: kinematic cage slip
+        error 2.9e-3 pp at 1e-4 and at 1e-6, the step's error dominates; 430 instead of 611
+        Newton iterations; 1e-3: 2.5e-2 pp). Absolute None (default): for the implicit
+        solvers the smallest ``RecommendedAbsoluteTolerance()`` of the bearings, 3e-5 of
+        their largest contact load (the force law's resolution, MODEL.md §10b), else 1e-6.
     jacobian : {'block', 'exudyn'}
         Implicit solvers: the connector's block finite-difference Jacobian or Exudyn's
         own numerical one.
@@ -75,7 +78,7 @@ class SolverSettings:
     step: float | None = None
     spectral_radius: float = 0.5
     relative_tolerance: float = 1e-4
-    absolute_tolerance: float = 1e-6
+    absolute_tolerance: float | None = None
     jacobian: str = "block"
     output_step: float = 1e-4
     newton_contractivity: float = 0.5
@@ -88,7 +91,7 @@ class SolverSettings:
             raise ValueError(f"solver must be one of {SOLVERS}, got {self.solver!r}")
         for name in ("step", "relative_tolerance", "absolute_tolerance", "output_step"):
             value = getattr(self, name)
-            if name == "step" and value is None:
+            if name in ("step", "absolute_tolerance") and value is None:
                 continue
             if not (math.isfinite(value) and value > 0):
                 raise ValueError(f"{name} must be positive, got {value!r}")
@@ -104,13 +107,19 @@ class SolverSettings:
 
     def resolved(self, handles) -> "SolverSettings":
         """These settings with ``step`` None replaced by the smallest ``RecommendedStep()``
-        of the bearing ``handles`` (1e-4 s without any)."""
-        if self.step is not None:
-            return self
-        from .steprule import NOMINAL_STEP
+        of the bearing ``handles`` (1e-4 s without any), and ``absolute_tolerance`` None by
+        the smallest ``RecommendedAbsoluteTolerance()`` (implicit solvers; else 1e-6)."""
+        from .steprule import MIN_ABSOLUTE_TOLERANCE, NOMINAL_STEP
 
-        steps = [h.RecommendedStep() for h in handles if hasattr(h, "RecommendedStep")]
-        return replace(self, step=min(steps, default=NOMINAL_STEP))
+        settings = self
+        if settings.step is None:
+            steps = [h.RecommendedStep() for h in handles if hasattr(h, "RecommendedStep")]
+            settings = replace(settings, step=min(steps, default=NOMINAL_STEP))
+        if settings.absolute_tolerance is None:
+            tolerances = [h.RecommendedAbsoluteTolerance() for h in handles
+                          if settings.implicit and hasattr(h, "RecommendedAbsoluteTolerance")]
+            settings = replace(settings, absolute_tolerance=min(tolerances, default=MIN_ABSOLUTE_TOLERANCE))
+        return settings
 
     @property
     def implicit(self) -> bool:
@@ -160,6 +169,8 @@ class RunInfo:
 
 def _exudyn_settings(settings: SolverSettings, end_time: float):
     import exudyn as exu
+
+    settings = settings.resolved([])  # a no-op for run_solver's settings, resolved per bearing
 
     s = exu.SimulationSettings()
     ti = s.timeIntegration
@@ -400,7 +411,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     if error_estimate:
         finer = replace(settings, step=0.5 * info.solver["step"], output_step=settings.output_step,
                         relative_tolerance=0.5 * settings.relative_tolerance,
-                        absolute_tolerance=0.5 * settings.absolute_tolerance)
+                        absolute_tolerance=0.5 * info.solver["absolute_tolerance"])
         ref = simulate(bearing, lubricant, axial=axial, radial=radial, rpm=rpm, time=time, settings=finer, drag=drag,
                        contact_law=contact_law, cage=cage, initial_state=initial_state)
         keys = ("cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",

@@ -1,4 +1,4 @@
-"""The default time step of a bearing scene (docs/MODEL.md §10a).
+"""The default time step (docs/MODEL.md §10a) and Newton tolerance (§10b) of a bearing scene.
 
 The implicit solver holds a step of 1e-4 s on the reference bearing; smaller, lighter balls
 at the same or higher pressure need a smaller one. The step needed follows (an empirical
@@ -42,7 +42,8 @@ import math
 import numpy as np
 
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
-           "ball_vibration_frequency", "orbit_step_limit", "recommended_step"]
+           "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
+           "recommended_step", "recommended_absolute_tolerance"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
@@ -53,6 +54,22 @@ MAX_VIBRATION_PHASE = 8.0
 ORBIT_PREDICTOR_FACTOR = 0.25 * (0.5 + 1.0 / 3.0 + 0.5) ** 2 * (2.0 / 3.0)
 #: largest c h² r_c ω_c² / δ_o at which the high-speed cases ran without a step cut, -
 MAX_ORBIT_PREDICTOR_RATIO = 2.0
+
+
+#: Newton's absolute tolerance as a share of the largest contact load: the compiled traction
+#: rule resolves a contact's traction to ~1e-3 (its rays switch in such steps), i.e. ~3e-5 of
+#: the normal load at a traction coefficient of 0.03; a residual asked below that stalls
+#: Newton there (MODEL.md §10b)
+FORCE_RESOLUTION = 3e-5
+#: the absolute tolerance without a loaded contact to scale it, N
+MIN_ABSOLUTE_TOLERANCE = 1e-6
+
+
+def recommended_absolute_tolerance(loads) -> float:
+    """:data:`FORCE_RESOLUTION` times the largest inner or outer contact load of the
+    quasi-static ``loads``, N, at least :data:`MIN_ABSOLUTE_TOLERANCE`."""
+    largest = max(float(np.max(loads.inner_load, initial=0.0)), float(np.max(loads.outer_load, initial=0.0)))
+    return max(MIN_ABSOLUTE_TOLERANCE, FORCE_RESOLUTION * largest)
 
 
 def ball_vibration_frequency(bearing, loads) -> float:

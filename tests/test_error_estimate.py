@@ -25,7 +25,7 @@ def ratios(settings, time):
     assert "error_estimate" in run.to_dict()
     fine = simulate(axial=1300.0, time=time, settings=SolverSettings(
         solver=settings.solver, step=step / 8, output_step=settings.output_step,
-        relative_tolerance=settings.relative_tolerance / 8, absolute_tolerance=settings.absolute_tolerance / 8))
+        relative_tolerance=settings.relative_tolerance / 8, absolute_tolerance=run.solver["absolute_tolerance"] / 8))
     out = {}
     for key in KEYS:
         assert est[key] > 0, key

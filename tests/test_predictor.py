@@ -1,5 +1,6 @@
-"""The constant-acceleration Newton start (exudyn_bearing/predictor.py, MODEL.md §10b): it
-may change how Newton gets to a step's solution, never the solution."""
+"""Newton in the implicit runs (MODEL.md §10b): the constant-acceleration start
+(exudyn_bearing/predictor.py) may change how Newton gets to a step's solution, never the
+solution; the absolute tolerance follows the force law's resolution."""
 import numpy as np
 import pytest
 
@@ -125,3 +126,21 @@ def test_a_grown_step_gets_a_fresh_jacobian():
                    drag=HIGH_SPEED_DRAG, settings=SolverSettings(progress=False))
     assert run.solver["step"] == pytest.approx(1e-4 / 3)
     assert run.steps < 120
+
+
+def test_newton_absolute_tolerance_follows_the_largest_contact_load():
+    """run_solver's default absolute tolerance is 3e-5 of the largest contact load (MODEL.md
+    §10b): on the reference bearing at 1.3 kN between F_a/Z and 1.5 F_a/(Z sin a0) (the inner
+    load; the outer one adds the ~34 N centrifugal force), 1e-6 for DOPRI5."""
+    import math
+
+    from exudyn_bearing import REFERENCE_BEARING
+
+    mbs, handle = _reference_scene()
+    info = run_solver(mbs, [handle], 2e-4, SolverSettings(progress=False))
+    share = 1300.0 / REFERENCE_BEARING.balls
+    tol = info.solver["absolute_tolerance"]
+    assert tol == handle.RecommendedAbsoluteTolerance()
+    assert 3e-5 * share < tol < 3e-5 * 1.5 * share / math.sin(REFERENCE_BEARING.contact_angle)
+    assert SolverSettings(solver="dopri5").resolved([handle]).absolute_tolerance == 1e-6
+    assert SolverSettings(absolute_tolerance=1e-3).resolved([handle]).absolute_tolerance == 1e-3
