@@ -168,8 +168,9 @@ class NewtonPredictor:
         state (called with Exudyn's zero-acceleration start in place), and whether the step
         size changed; None outside a dynamic step."""
         solver = mbs.sys.get("dynamicSolver")
-        if solver is not self._solver:  # a new solve: its integration constants, once
+        if solver is not self._solver:  # a new solve: its constants and coordinate indices, once
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan
+            self._indices = None  # the scene may have been assembled again since the last solve
         if self._constants is None:
             return None
         it = solver.it

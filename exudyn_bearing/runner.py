@@ -41,7 +41,8 @@ class SolverSettings:
         spurious radial oscillation of the free inner race from ~0.2 s (ball orbital speeds
         spread 33–93 rad/s, balls unloading) and fails near 0.5 s; with 0.5 it stays
         uniform to 0.7 s at about the same cost (docs/work_precision).
-    relative_tolerance, absolute_tolerance : float
+    relative_tolerance : float
+    absolute_tolerance : float or None
         Newton (implicit; Exudyn's residual norm relative to the step's initial residual,
         and in N) or error (DOPRI5) tolerances; Newton stops at whichever it meets first.
         Relative 1e-4 by default (docs/work_precision, 1.3 kN at 1e-4 s: kinematic cage slip

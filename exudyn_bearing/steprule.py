@@ -33,7 +33,9 @@ s) 15 s, 1.8 (1.67e-5 s) 10 s; 72 000 rpm: 7.9 (2.5e-5 s) 42 s with 10 % of the 
 2.7 / 2.0 / 1.5 / 0.96 (1.67 / 1.43 / 1.25 / 1.0e-5 s) 27 / 19 / 24 / 20 s; the spindle at
 55 000 rpm: 3.75 (2.5e-5 s) 42 s with 5 % cut, 1.7 (1.67e-5 s) 11 s, radial 1.5 11 s. The
 reference bearing at 1800 rpm and 200 N holds 1e-4 s at e/δ_o = 1.7. The step is therefore
-also limited to e <= 2 δ_o (:data:`MAX_ORBIT_PREDICTOR_RATIO`).
+also limited to e <= 2 δ_o (:data:`MAX_ORBIT_PREDICTOR_RATIO`). The package's predicted first
+Newton iterate (:mod:`exudyn_bearing.predictor`, MODEL.md §10b) removes most of e; the rule is
+kept as measured with Exudyn's own start.
 """
 from __future__ import annotations
 
