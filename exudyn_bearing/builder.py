@@ -427,7 +427,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
                                               jacobianUserFunction=jacobian_user_function))
     # the Newton start from the previous acceleration (MODEL.md §10b), for plain SolveDynamic
     # scenes too; SolverSettings(predictor=False) turns it off for a run_solver run
-    install_predictor(mbs, nodes)
+    install_predictor(mbs, nodes, steady_start=steady is not None)
     sensor = None
     if recordStates:
         indices = []

@@ -113,11 +113,15 @@ class NewtonPredictor:
         self._pending = None
         self._solver = self._constants = None
         self._step_start = self._h = math.nan
+        self._first_solve = False
+        self.steady_start = True
 
-    def add_nodes(self, nodes) -> None:
+    def add_nodes(self, nodes, steady_start: bool = False) -> None:
         """Predict ``nodes`` too; each node once (bearings on one shaft share its node, and
-        a node moved twice would leave q, v and a inconsistent)."""
+        a node moved twice would leave q, v and a inconsistent). ``steady_start``: these
+        nodes start from a steady state (their initial accelerations are the motion's)."""
         self.nodes.extend(n for n in dict.fromkeys(int(n) for n in nodes) if n not in self.nodes)
+        self.steady_start = self.steady_start and steady_start
         self._indices = None
 
     def _coordinates(self, mbs):
@@ -169,6 +173,7 @@ class NewtonPredictor:
         size changed; None outside a dynamic step."""
         solver = mbs.sys.get("dynamicSolver")
         if solver is not self._solver:  # a new solve: its constants and coordinate indices, once
+            self._first_solve = self._solver is None
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan
             self._indices = None  # the scene may have been assembled again since the last solve
         if self._constants is None:
@@ -179,10 +184,13 @@ class NewtonPredictor:
             return None  # not this solver's step (e.g. a static solve after a dynamic one)
         new_step, self._h = h != self._h, h
         step_start, tiny = t - h, 1e-9 * max(h, abs(t) * 1e-6)
-        if step_start <= float(it.startTime) + tiny or abs(step_start - self._step_start) <= tiny:
+        first = step_start <= float(it.startTime) + tiny
+        if (first and not (self._first_solve and self.steady_start)) or abs(step_start - self._step_start) <= tiny:
             # the first step of a solve starts from Exudyn's initial accelerations (M⁻¹f of
-            # the start state: transients, not the motion); a step tried again after a cut
-            # (same start) gets Exudyn's own start: one predicted attempt per step
+            # the start state), the motion's own only where every bearing starts from its
+            # steady state and this is the scene's first solve; elsewhere they carry the
+            # start's transients. A step tried again after a cut (same start) gets Exudyn's
+            # own start: one predicted attempt per step
             self._step_start = step_start
             return None
         self._step_start = step_start
@@ -216,10 +224,12 @@ def _config():
     return exu.ConfigurationType
 
 
-def install_predictor(mbs, nodes) -> NewtonPredictor:
+def install_predictor(mbs, nodes, steady_start: bool = False) -> NewtonPredictor:
     """Add ``nodes`` (Lie-group rotation-vector rigid-body nodes of a bearing) to the
     system's :class:`NewtonPredictor`, creating and installing it as the system's
-    ``PreNewtonResidualUserFunction`` on first use (a function already set is chained)."""
+    ``PreNewtonResidualUserFunction`` on first use (a function already set is chained).
+    ``steady_start``: the bearing starts from its steady state (then, if all do, the
+    scene's first step is predicted too)."""
     predictor = mbs.variables.get(VARIABLE)
     if not isinstance(predictor, NewtonPredictor):
         try:  # Exudyn 1.13: 0, or {'function': f, 'type': 'Python'}
@@ -231,5 +241,5 @@ def install_predictor(mbs, nodes) -> NewtonPredictor:
         predictor = NewtonPredictor(existing if callable(existing) else None)
         mbs.variables[VARIABLE] = predictor
         mbs.SetPreNewtonResidualUserFunction(predictor)
-    predictor.add_nodes(nodes)
+    predictor.add_nodes(nodes, steady_start)
     return predictor
