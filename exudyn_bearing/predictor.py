@@ -16,7 +16,8 @@ start: left at the zero-acceleration start, that residual and so the convergence
 what they were without the predictor, and only the path to them is shorter.
 
 Not predicted: a solve's first step (its start acceleration is Exudyn's initial M⁻¹f, with
-the start state's transients) and a step tried again after a cut. Installed as the system's
+the start state's transients), except the scene's first solve when every bearing starts
+from its steady state, and a step tried again after a cut. Installed as the system's
 ``PreNewtonResidualUserFunction``, so a plain ``exu.SolveDynamic`` gets it too; a function
 the scene set before the bearing was created is chained, one set after it replaces the
 predictor (results unchanged, slower). Only what moves with the bearing is shifted: the
