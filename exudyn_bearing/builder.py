@@ -26,8 +26,8 @@ from .records import inputs_record
 from .connector import BearingConnector, CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
-from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_state, race_adapter,
-                    ring_inertia)
+from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_rows, node_state,
+                    race_adapter, ring_inertia)
 from .predictor import install_predictor
 from .quasidynamic import AzimuthStates
 from .start import choose_inner_control, jones_axis_start, raceway_control, steady_start
@@ -122,9 +122,7 @@ class BearingHandle:
             key = (float(t), int(configuration))
             if key not in cache:
                 if not indices:
-                    for node in nodes:
-                        start = mbs_.GetNodeODE2Index(node)
-                        indices.extend(range(start, start + 6))
+                    indices.extend(node_rows(mbs_, nodes))
                 q = np.asarray(mbs_.systemData.GetODE2Coordinates(configuration=configuration))[indices] + ref
                 q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=configuration))[indices]
                 res = compute_results(self, np.array([t]), q[None], q_t[None])
@@ -434,9 +432,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
 
         def record(mbs_, t, sensorNumbers, factors, configuration):
             if not indices:
-                for node in nodes:
-                    start = mbs_.GetNodeODE2Index(node)
-                    indices.extend(range(start, start + 6))
+                indices.extend(node_rows(mbs_, nodes))
             if connector.progress is not None:
                 connector.progress(t)
             q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)

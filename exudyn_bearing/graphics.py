@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .races import node_rows
+
 __all__ = ["AddBearingGraphics", "annotate_frame", "render_frames", "render_run", "slip_color", "write_animation"]
 
 
@@ -99,9 +101,7 @@ def AddBearingGraphics(mbs, handle, *, races: bool = True, cage: bool = True, co
 
     def draw(mbs_, itemNumber):
         if not indices:
-            for node in nodes:
-                start = mbs_.GetNodeODE2Index(node)
-                indices.extend(range(start, start + 6))
+            indices.extend(node_rows(mbs_, nodes))
         cfg = exu.ConfigurationType.Visualization
         q = np.asarray(mbs_.systemData.GetODE2Coordinates(configuration=cfg))[indices] + con.reference
         q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=cfg))[indices]
@@ -300,7 +300,7 @@ def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, fra
     mbs.Assemble()
     run_solver(mbs, [h], time, SolverSettings())
     t, q, q_t = h.States(mbs)
-    idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6) for n in h.nodeNumbers])
+    idx = node_rows(mbs, h.nodeNumbers)
     n_sys = len(mbs.systemData.GetODE2Coordinates())
     picks = np.unique(np.linspace(0, len(t) - 1, frames).round().astype(int))
     states = []

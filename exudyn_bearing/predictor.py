@@ -30,6 +30,8 @@ import math
 import numpy as np
 from numba import njit
 
+from .races import node_rows
+
 __all__ = ["NewtonPredictor", "compose_rotation_vectors", "install_predictor"]
 
 #: key of the predictor in ``mbs.variables`` (one per system, shared by its bearings)
@@ -127,10 +129,9 @@ class NewtonPredictor:
 
     def _coordinates(self, mbs):
         if self._indices is None:
-            starts = np.array([mbs.GetNodeODE2Index(n) for n in self.nodes], dtype=np.intp)
-            rot = (starts[:, None] + np.arange(3, 6)).ravel()
+            rows = node_rows(mbs, self.nodes)
+            starts, rot = rows[::6], rows.reshape(-1, 6)[:, 3:].ravel()
             ref = np.asarray(mbs.systemData.GetODE2Coordinates(configuration=_config().Reference), dtype=float)
-            rows = (starts[:, None] + np.arange(6)).ravel()
             # the bearings' nodes are the whole system (the usual scene): the predicted
             # vectors are set as they are, no other item's Newton iterate to keep
             everything = np.array_equal(np.sort(rows), np.arange(ref.size))

@@ -139,6 +139,13 @@ def node_state(mbs, node):
     return ref[:3] + init[:3], rot, init_t[:3], rot @ w_local
 
 
+def node_rows(mbs, nodes) -> np.ndarray:
+    """Rows of the 6 ODE2 coordinates (displacement, rotation vector) of each of the
+    Lie-group rigid-body ``nodes`` in the system vectors of an assembled ``mbs``, node by node."""
+    starts = np.array([mbs.GetNodeODE2Index(n) for n in nodes], dtype=np.intp)
+    return (starts[:, None] + np.arange(6)).ravel()
+
+
 def race_adapter(mbs, bearing, race, which, node_type):
     """A race frame on a body whose node is not a rotation-vector Lie-group node: a light
     race body with such a node (:data:`ADAPTER_MASS_FRACTION` of the default ring), joined

@@ -16,6 +16,7 @@ from .cage import CageModel
 from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .predictor import VARIABLE as PREDICTOR_VARIABLE
+from .races import node_rows
 from .records import inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
@@ -217,8 +218,7 @@ def _where(handles, mbs=None) -> str:
             q_t = np.asarray(mbs.systemData.GetODE2Coordinates_t())
             t = float(mbs.systemData.GetTime())
             for h in handles:
-                idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6)
-                                      for n in h.nodeNumbers])
+                idx = node_rows(mbs, h.nodeNumbers)
                 if np.all(np.isfinite(q[idx])) and np.all(np.isfinite(q_t[idx])):
                     parts.append("last state: " + h.connector.diagnose(t, q[idx] + h.connector.reference, q_t[idx]))
         except Exception:  # noqa: BLE001 - diagnosis is best effort, never masks the failure
