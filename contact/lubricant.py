@@ -35,13 +35,22 @@ class Lubricant:
     limiting_shear_coefficient : float
         Lambda = tau_L / p >= 0, the limiting shear stress over the pressure (MODEL.md §6a):
         the traction law ``ContactLaw(traction='crook-limited')`` bounds the local shear
-        stress smoothly by tau_L = Lambda p. 0: no limit. Default 0.047, Bair & Winer's
-        (1979) value for a mineral oil.
+        stress smoothly by tau_L = Lambda p. 0: no limit. Default 0.047, a representative
+        mineral-oil value: measured coefficients lie between about 0.03 and 0.1 and depend on
+        base-oil chemistry, pressure and temperature (Hoglund & Jacobson 1986, ASME J. Tribol.
+        108, 571-577, mineral and synthetic oils to 2.2 GPa and 200 degC; Wikstrom & Hoglund
+        1994, ASME J. Tribol. 116, 612-620); 0.047 itself is not traced to a table of a
+        primary paper (MODEL.md §6a, docs/lubricant_sensitivity.md for what it moves).
     film_shear_modulus_coefficient : float
         kappa = G / p > 0, the film's elastic shear modulus over the pressure (MODEL.md §6b),
         used where the contact law has ``film_elasticity``: it bounds the traction's initial
-        slope. Default 2 pi 0.047 = 0.2953 (tau_L / G -> 1/(2 pi), Proc. R. Soc. A 372 (1980)
-        155; G 0.1-1 GPa over 1-2 GPa for a mineral oil, Johnson & Roberts 1974).
+        slope. An input of its own, not rescaled when Lambda changes. Default 0.2953, chosen
+        so that tau_L / G = 0.047 / 0.2953 = 1/(2 pi), the ratio the limiting shear stress and
+        the shear modulus were found to approach with pressure ("The elastic properties of
+        films in e.h.l. contacts", Proc. R. Soc. Lond. A 372 (1980) 155-168, four fluids incl.
+        a paraffinic cylinder stock, Hertz pressures to 2 GPa: a limit, not a fit); of the
+        size Johnson & Roberts (1974, Proc. R. Soc. Lond. A 337, 217) measured for a mineral
+        oil at 23 degC, G = 0.1-1 GPa over 1-2 GPa (G/p 0.1-0.5).
     """
 
     viscosity: float
@@ -94,9 +103,7 @@ REFERENCE_LUBRICANT = Lubricant(
     thermal_conductivity=0.14,
     density=860.0,  # kg/m^3 (paper table 1b)
     # Not in the paper (its Crook law has no limit; ContactLaw(traction='crook') keeps it).
-    # tau_L / p = 0.047 for a mineral oil, Bair & Winer (1979, "A rheological model for EHD
-    # contacts based on primary laboratory data", ASME J. Lubr. Technol. 101, 258-265), as
-    # quoted in the traction literature; Hoglund gives 0.035-0.053 for ISO VG 100 mineral and
-    # PAO oils (MODEL.md §6a).
+    # A representative mineral-oil tau_L / p; provenance in the class docstring and MODEL.md §6a.
     limiting_shear_coefficient=0.047,
+    film_shear_modulus_coefficient=0.2953,  # tau_L / G = 1/(2 pi) (MODEL.md §6b)
 )

@@ -53,8 +53,12 @@ SPINDLE_40MM_BEARING = Bearing(balls=14, ball_diameter=8.731e-3, pitch_diameter=
 #: 40 degC and 5.1 cSt at 100 degC give by Walther's relation (ASTM D341) 3.5 cSt x 919 kg/m^3
 #: = 3.2 mPa s at 121 degC, local slope d ln(eta)/dT = -0.016 1/K; c_etaP 1.5e-8 1/Pa;
 #: conductivity 0.15 W/(m K) (typical of esters).
+# Lambda and kappa assumed equal to the mineral oil's (0.047, 0.2953): no published limiting
+# shear or film modulus of a MIL-PRF-23699 oil was available; esters and higher temperatures
+# usually give a lower tau_L / p, so the traction cap is rather an upper estimate (MODEL.md §6a).
 ESTER_TURBINE_OIL = Lubricant(viscosity=3.2e-3, reference_temperature=121.0, pressure_viscosity=1.5e-8,
-                              temperature_viscosity=0.016, thermal_conductivity=0.15, density=919.0)
+                              temperature_viscosity=0.016, thermal_conductivity=0.15, density=919.0,
+                              limiting_shear_coefficient=0.047, film_shear_modulus_coefficient=0.2953)
 
 #: Jet- or mist-lubricated high-speed bearing: 0.5 % oil in the oil-air mixture (issue 19).
 HIGH_SPEED_DRAG = BallDrag(drag_coefficient=0.5, oil_volume_fraction=0.005)

@@ -20,7 +20,7 @@ B, OIL, DRAG = HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_DRAG
 AXIAL = 667.0
 #: the default law's constants (MODEL.md §6a, §6b) and the drag's effective density, written
 #: out so that a changed preset shows up as a difference
-LIMITING_SHEAR, FILM_MODULUS = 0.047, 2.0 * math.pi * 0.047
+LIMITING_SHEAR, FILM_MODULUS = 0.047, 0.2953  # Λ; κ: τ_L/G = 1/(2π) (MODEL.md §6b)
 DRAG_DENSITY = 0.005 * 919.0
 
 

@@ -39,12 +39,14 @@ PAPER_OIL = Lubricant(viscosity=0.04, reference_temperature=30.0, pressure_visco
                       temperature_viscosity=0.05, thermal_conductivity=0.14, density=860.0)
 #: MODEL.md §8: sphere drag, C_D = 0.5, fully flooded (rho_eff = 860 kg/m³).
 DRAG_COEFFICIENT, OIL_DENSITY = 0.5, 860.0
-#: MODEL.md §6a: the default law caps Crook's stress smoothly at Lambda p, Lambda = 0.047 for a
-#: paraffinic mineral oil (Höglund 1999; Bair & Winer).
+#: MODEL.md §6a: the default law caps Crook's stress smoothly at Lambda p, Lambda = 0.047, a
+#: representative mineral-oil value (measured 0.03-0.1: Höglund & Jacobson 1986; Wikström &
+#: Höglund 1994; not traced to a primary table).
 LIMITING_SHEAR = 0.047
-#: MODEL.md §6b: and puts the film's elastic shear compliance in series, G = kappa p with
-#: kappa = 2 pi Lambda (tau_L/G -> 1/(2 pi), Proc. R. Soc. A 372 (1980) 155).
-FILM_MODULUS = 2.0 * math.pi * 0.047
+#: MODEL.md §6b: and puts the film's elastic shear compliance in series, G = kappa p, kappa
+#: 0.2953 chosen so that tau_L/G = 1/(2 pi), the ratio approached with pressure in Proc. R. Soc.
+#: Lond. A 372 (1980) 155 (an input of its own, not rescaled with Lambda).
+FILM_MODULUS = 0.2953
 
 
 def run(axial, time, **kw):

@@ -22,7 +22,7 @@ RPM = 1800.0
 #: MODEL.md §8 drag (C_D 0.5, fully flooded) and the default law's constants (§6a, §6b),
 #: written out here so that a changed preset shows up as a difference
 DRAG_COEFFICIENT, OIL_DENSITY = 0.5, 860.0
-LIMITING_SHEAR, FILM_MODULUS = 0.047, 2.0 * math.pi * 0.047
+LIMITING_SHEAR, FILM_MODULUS = 0.047, 0.2953  # Λ; κ: τ_L/G = 1/(2π) (MODEL.md §6b)
 
 
 @pytest.mark.parametrize("axial", [400.0, 1300.0])
