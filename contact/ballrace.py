@@ -14,7 +14,8 @@ import numpy as np
 from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
-from .rolling_resistance import hydrodynamic_rolling_force, rolling_resistance_moment, thermal_film_factor
+from .rolling_resistance import (hydrodynamic_rolling_force, rolling_resistance_force, rolling_resistance_moment,
+                                 thermal_film_factor)
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS", "CROOK_MODELS"]
 
@@ -225,6 +226,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     # the damping part of Q times the approach rate (the elastic part stores energy)
     damping_loss = np.where(load > 0, (load - elastic) * kin.penetration_rate, 0.0)
     rolling = np.zeros(n_con)
+    rolling_push = np.zeros(n_con)  # rolling resistance's net force on the ball along t1
     rolling_loss = np.zeros(n_con)
     fx = np.zeros(n_con)
     fy = np.zeros(n_con)
@@ -265,7 +267,10 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
                                                      a, b, params.effective_modulus, lubricant.viscosity,
                                                      width=params.ball_diameter)
             rolling[idx] = rolling_resistance_moment(f_r, r_x[idx], kin.rolling_rate[idx])
-            rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx]
+            rolling_push[idx] = rolling_resistance_force(f_r, r_x[idx], 0.5 * params.ball_diameter,
+                                                         kin.rolling_rate[idx])
+            # the couple's power and the force pair's at the contact point (u = race − ball)
+            rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx] + rolling_push[idx] * kin.slip_rolling[idx]
         # spin still shapes the local slip field when its moment is switched off
         p_traction = p_max[idx]
         if lubricant.pressure_viscosity > 0:
@@ -282,7 +287,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz
-    force = -load[:, None] * kin.normal + fx[:, None] * kin.rolling + fy[:, None] * kin.transverse
+    force = -load[:, None] * kin.normal + (fx + rolling_push)[:, None] * kin.rolling + fy[:, None] * kin.transverse
     # lever arm p - c = r n: the normal force has no moment about the ball centre
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
     if law.rolling_resistance:

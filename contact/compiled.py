@@ -628,6 +628,7 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
     fy = 0.0
     mz = 0.0
     m_r = 0.0  # rolling-resistance couple about t2, on the ball
+    f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if traction == 1 and q > 0.0:
         base = 6.0 * second * q * radius / (math.pi * e_prime)
         sa = np.cbrt(ell * ell * base)
@@ -664,10 +665,12 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
             span = min(2.0 * sa / rr_width, 1.0)
             f_r = phi_t * f_r / (1.0 + (1.0 / c_t - 1.0) * span ** ((2.0 - kap) * (0.0018 * moes + 1.33)))
             w_rel = ((wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z)
-            m_r = -2.0 * f_r * r_x * math.tanh(r_x * w_rel / 1e-3)
-    Fx = -q * nx + fx * t1x + fy * t2x
-    Fy = -q * ny + fx * t1y + fy * t2y
-    Fz = -q * nz + fx * t1z + fy * t2z
+            sense = math.tanh(r_x * w_rel / 1e-3)
+            m_r = -2.0 * f_r * r_x * sense
+            f_b = f_r * (2.0 * r_x / ball_radius - 1.0) * sense
+    Fx = -q * nx + (fx + f_b) * t1x + fy * t2x
+    Fy = -q * ny + (fx + f_b) * t1y + fy * t2y
+    Fz = -q * nz + (fx + f_b) * t1z + fy * t2z
     force[ib, k, j, 0] = Fx
     force[ib, k, j, 1] = Fy
     force[ib, k, j, 2] = Fz

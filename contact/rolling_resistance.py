@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["hydrodynamic_rolling_force", "rolling_resistance_moment", "thermal_film_factor"]
+__all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment", "thermal_film_factor"]
 
 
 def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width=None):
@@ -72,16 +72,33 @@ def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, visco
 
 
 def rolling_resistance_moment(force, r_x, rolling_rate, regularization=1e-3):
-    """Moment of the rolling resistance on the ball about the transverse axis t2, N m (MODEL.md
+    """Couple of the rolling resistance on the ball about the transverse axis t2, N m (MODEL.md
     §11b): -2 f R_x tanh(R_x w_r / u_reg), equal and opposite on the race.
 
     ``rolling_rate`` w_r = (w_ball - w_race) . t2 (rad/s) is the relative rolling rotation, so
     the couple dissipates 2 f R_x |w_r| = 2 f u_m in pure rolling (R_x |w_r| = u_m): Biboulet &
-    Houpert's power loss, with no net force on either body. ``regularization`` u_reg (m/s)
-    smooths the sign through zero rolling."""
+    Houpert's power loss. It is the moment of the film's forces about the contact point; with
+    :func:`rolling_resistance_force` at that point the ball feels f r_b about its centre.
+    ``regularization`` u_reg (m/s) smooths the sign through zero rolling."""
     r_x = np.asarray(r_x, dtype=float)
     return -2.0 * np.asarray(force, dtype=float) * r_x * np.tanh(r_x * np.asarray(rolling_rate, dtype=float)
                                                                    / regularization)
+
+
+def rolling_resistance_force(force, r_x, ball_radius, rolling_rate, regularization=1e-3):
+    """Net tangential force of the rolling resistance on the ball at the contact point along
+    the rolling direction t1, N (MODEL.md §11b); the race takes the opposite force there.
+
+    The film shears each surface by f against its motion relative to the contact, and its
+    pressure, whose resultant lies 2 f R_x / Q upstream of the contact centre (Biboulet &
+    Houpert 2010, part 1, eqs. 32-37), pushes each body by 2 f R_x / R_body along it through
+    that body's centre (Balan, Houpert et al. 2015, Lubricants 3, 222: the pressure force
+    2 F_R through the ball centre). On the ball (R_body = r_b) the sum is
+    f (2 R_x / r_b - 1) along its surface's motion tanh(R_x w_r / u_reg) t1; with the couple of
+    :func:`rolling_resistance_moment` the moment about the ball centre is -f r_b."""
+    r_x = np.asarray(r_x, dtype=float)
+    return (np.asarray(force, dtype=float) * (2.0 * r_x / ball_radius - 1.0)
+            * np.tanh(r_x * np.asarray(rolling_rate, dtype=float) / regularization))
 
 
 def thermal_film_factor(entrainment, slip, max_pressure, e_prime, viscosity, temperature_viscosity,

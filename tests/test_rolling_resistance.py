@@ -104,3 +104,43 @@ def test_rolling_force_rises_with_film_thickness():
     by_viscosity = [float(hydrodynamic_rolling_force(1000.0, 1.0, R_X, R_Y, a, b, E_PRIME, eta))
                     for eta in (0.004, 0.04, 0.4)]
     assert np.all(np.diff(by_speed) > 0) and np.all(np.diff(by_viscosity) > 0)
+
+
+def test_force_and_moment_on_the_ball_by_hand():
+    """One inner contact of the reference bearing in near-pure rolling (2 mm/s of slip): the
+    rolling resistance adds, against the same contact without it, a force f (2 R_x/r_b − 1)
+    along the ball surface's motion t1 at the contact point and a moment −f r_b about the
+    ball centre (−2 f R_x about the contact point); the film's shear f against each surface
+    and its pressure 2 f R_x/r_b through the ball centre (Biboulet & Houpert 2010 part 1,
+    eqs. 32–37; Bălan, Houpert et al. 2015). By hand: R_x from the ball and race radii in
+    the rolling direction, f from the fit (tested above against its asymptotes)."""
+    from contact.ballrace import ContactLaw, ball_race_forces
+    from contact.kinematics import ball_race_kinematics
+    from exudyn_bearing import REFERENCE_BEARING as B, REFERENCE_LUBRICANT as LUB
+    from tests.test_branches import INNER, R_I, TUBE_I, W_RACE, Z_I, _inner_contacts
+
+    c, v, w = _inner_contacts((30e-6,), u_x=2e-3, u_y=0.0, spin=0.0)
+    kin = ball_race_kinematics(c, v, w, np.zeros(3), np.eye(3), np.zeros(3), W_RACE, (R_I, Z_I, TUBE_I),
+                               B.ball_radius, "inner")
+    with_rr = ball_race_forces(kin, INNER, LUB, ContactLaw(rolling_resistance=True))
+    without = ball_race_forces(kin, INNER, LUB, ContactLaw())
+    r_b = B.ball_radius
+    alpha = kin.contact_angle[0]
+    race_radius = (B.pitch_diameter - B.ball_diameter * math.cos(alpha)) / (2 * math.cos(alpha))
+    r_x = 1 / (1 / r_b + 1 / race_radius)
+    a, b = INNER.hertz(alpha, ContactLaw().hertz_method)[1].semi_axes(with_rr.normal_load)
+    r_y = 1 / (1 / r_b - 1 / (B.inner_conformity * B.ball_diameter))
+    f = float(hydrodynamic_rolling_force(with_rr.normal_load, kin.entrainment, r_x, r_y, a, b, B.effective_modulus,
+                                         LUB.viscosity, width=B.ball_diameter)[0])
+    assert f > 0.05  # a force worth testing (N)
+    sense = math.copysign(1.0, float(kin.rolling_rate[0]))
+    d_force = with_rr.force[0] - without.force[0]
+    d_moment = with_rr.moment[0] - without.moment[0]
+    t1, t2, n = kin.rolling[0], kin.transverse[0], kin.normal[0]
+    assert d_force @ t1 == pytest.approx(sense * f * (2 * r_x / r_b - 1), rel=1e-6)
+    assert abs(d_force @ t2) < 1e-9 * f and abs(d_force @ n) < 1e-9 * f
+    assert d_moment @ t2 == pytest.approx(-sense * f * r_b, rel=1e-6)
+    # about the contact point p = c + r_b n: the couple −2 f R_x alone
+    assert (d_moment - np.cross(r_b * n, d_force)) @ t2 == pytest.approx(-2 * sense * f * r_x, rel=1e-6)
+    # along the entrainment: the surfaces' mean motion relative to the contact
+    assert sense * kin.entrainment[0] > 0
