@@ -16,7 +16,7 @@ see docs/friction_models.md for what was and was not checked):
 Palmgren (Harris & Kotzalas, Rolling Bearing Analysis): M0 = 1e-7 f0 (nu n)^(2/3) dm³ and
 M1 = f1 P1 dm, with f0 from 1 (oil mist, oil–air) to 2 (oil bath) and f1 = 0.001 (P0/C0)^0.33.
 
-    python benchmarks/friction_models.py            # ~1 min; writes docs/friction_models.md, .json
+    python benchmarks/friction_models.py            # ~2 min; writes docs/friction_models.md, .json
 """
 import argparse
 import json
@@ -138,8 +138,9 @@ sliding term G_sl μ_sl. SKF's μ_sl is one lumped coefficient for all sliding i
 in mineral and synthetic oils (full film 0.04 for synthetic oil; with this thin oil,
 ν n = {rows[0]['nu_mm2_s'] * rows[0]['rpm']:.0f}–{rows[-1]['nu_mm2_s'] * rows[-1]['rpm']:.0f} mm²/s r/min, SKF's mixed-film weighting φ_bl raises it to
 {rows[0]['skf_Nmm']['mu_sl']:.3f} at {rows[0]['rpm']:.0f} rpm and {rows[-1]['skf_Nmm']['mu_sl']:.3f} at {rows[-1]['rpm']:.0f} rpm). The model has no
-boundary friction (its film is always full: Λ > 3 assumed), no ball–pocket friction and, in
-this run, no cage-land friction, so its sliding loss is the contacts' alone. The difference
+boundary friction (its film is always full: Λ > 3 assumed) and, in this run, neither
+ball–pocket friction (`CageModel(pocket_friction=μ)`) nor cage-land friction (`land_width`),
+both off by default, so its sliding loss is the contacts' alone. The difference
 is what those sources and the mixed-film correction would have to supply.
 
 **Drag.** The model's ball drag at 0.5 % oil is small at these speeds (it rises as n² and
@@ -172,7 +173,7 @@ on the speed (no centrifugal growth, which SKF's F_g terms and the model carry).
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--rpm", type=float, nargs="+", default=SPEEDS)
-    parser.add_argument("--time", type=float, default=0.02, help="simulated time per speed, s")
+    parser.add_argument("--time", type=float, default=0.05, help="simulated time per speed, s")
     parser.add_argument("--out", default="docs")
     args = parser.parse_args()
     rows = []
