@@ -30,7 +30,8 @@ from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, nod
                     race_adapter, ring_inertia)
 from .predictor import install_predictor
 from .quasidynamic import AzimuthStates
-from .start import choose_inner_control, jones_axis_start, raceway_control, steady_start
+from .raceway import choose_inner_control, jones_axis_start, raceway_control
+from .start import steady_start
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
@@ -213,9 +214,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     initialControl : {'auto', 'inner', 'outer'}
         Pure-rolling start: 'inner'/'outer' is raceway control (Jones) by that contact —
         each ball's absolute spin axis solved for zero spin there and zero rolling slip at
-        both contacts (:func:`exudyn_bearing.start.raceway_control`); 'auto' takes Jones' angle of the contact
+        both contacts (:func:`exudyn_bearing.raceway.raceway_control`); 'auto' takes Jones' angle of the contact
         with the larger Newtonian spin resistance as the absolute axis (see
-        ``start.jones_axis_start``: measured to start combined loads with the fewest step cuts).
+        ``raceway.jones_axis_start``: measured to start combined loads with the fewest step cuts).
     initialState : {'auto', 'steady', 'rolling'}
         'steady': every ball, the cage and the inner race start in the steady rolling state
         of :func:`exudyn_bearing.steady_state` (pure axial load on a created inner race:

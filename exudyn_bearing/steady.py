@@ -33,6 +33,7 @@ from .newton import damped_newton
 from .outputs import cage_slip
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
+from .raceway import raceway_control
 from .records import inputs_record, units_of
 
 __all__ = ["SteadyState", "steady_state", "gyroscopic_minimum_axial"]
@@ -300,8 +301,6 @@ def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
         w_c, spin = rolling_cage_speed(c[None], e[None], p_in[None], p_out[None], ball.w_i, ball.w_o, return_spin=True)
         x[0], x[1:4] = w_c[0], spin[0] * e
     else:
-        from .start import raceway_control
-
         w_c, omega = raceway_control(c[None], p_in[None], p_out[None], ball.w_i, ball.w_o,
                                      np.array([axis == "inner"]), inner_origin=(0.0, 0.0, loads.displacement[2]))
         x[0], x[1:4] = w_c[0], omega[0]

@@ -1,0 +1,115 @@
+"""The import rules of docs/ARCHITECTURE.md: which package may import which, and no import
+circle between modules — imports inside functions included (they hide circles, not remove
+them)."""
+import ast
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGES = ("contact", "exudyn_bearing")
+#: what each package may import beyond the standard library (top-level names)
+ALLOWED = {
+    "contact": {"contact", "numpy", "scipy", "numba", "llvmlite"},
+    "exudyn_bearing": {"exudyn_bearing", "contact", "exudyn", "numpy", "scipy", "numba", "matplotlib", "dask",
+                       "tomli", "PIL", "imageio"},
+}
+
+
+def _module(path):
+    parts = list(path.relative_to(ROOT).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path):
+    """(top-level name, module) of every import in the file, at any depth of the syntax tree."""
+    mod = _module(path)
+    package = mod if path.name == "__init__.py" else mod.rpartition(".")[0]
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            out += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")[: len(package.split(".")) - (node.level - 1)]
+                target = ".".join(base + ([node.module] if node.module else []))
+            else:
+                target = node.module
+            for alias in node.names:  # "from pkg import submodule" imports the submodule
+                sub = f"{target}.{alias.name}"
+                out.append(sub if (ROOT / Path(*sub.split("."))).with_suffix(".py").exists() else target)
+    return out
+
+
+def _graph():
+    graph = {}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            graph[_module(path)] = {m for m in _imports(path) if m.split(".")[0] in PACKAGES} - {_module(path)}
+    return graph
+
+
+def _cycles(graph):
+    """Strongly connected components of more than one module (Tarjan)."""
+    index, low, stack, on, found, counter = {}, {}, [], set(), [], [0]
+
+    def visit(v):
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on.add(v)
+        for w in graph.get(v, ()):
+            if w not in graph:
+                continue
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                found.append(sorted(comp))
+
+    sys.setrecursionlimit(max(sys.getrecursionlimit(), 5000))
+    for v in list(graph):
+        if v not in index:
+            visit(v)
+    return found
+
+
+def test_no_import_circle():
+    assert _cycles(_graph()) == []
+
+
+def test_the_cycle_finder_sees_a_circle():
+    assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+
+
+def test_function_level_imports_are_seen(tmp_path, monkeypatch):
+    """A circle made only by an import inside a function is still a circle."""
+    pkg = tmp_path / "exudyn_bearing"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from .b import f\n")
+    (pkg / "b.py").write_text("def f():\n    from .a import g\n")
+    monkeypatch.setattr(sys.modules[__name__], "ROOT", tmp_path)
+    monkeypatch.setattr(sys.modules[__name__], "PACKAGES", ("exudyn_bearing",))
+    assert _cycles(_graph()) == [["exudyn_bearing.a", "exudyn_bearing.b"]]
+
+
+def test_packages_import_only_what_the_architecture_allows():
+    stdlib = set(sys.stdlib_module_names) | {"__future__"}
+    bad = []
+    for package, allowed in ALLOWED.items():
+        for path in sorted((ROOT / package).rglob("*.py")):
+            for name in _imports(path):
+                top = name.split(".")[0]
+                if top not in allowed and top not in stdlib:
+                    bad.append((str(path.relative_to(ROOT)), name))
+    assert bad == []
