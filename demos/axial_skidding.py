@@ -15,10 +15,7 @@ from pathlib import Path
 
 import exudyn as exu
 
-from exudyn_bearing import races
-from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.errors import BearingSimulationError
-from exudyn_bearing.runner import SolverSettings, run_solver
+from exudyn_bearing import BearingSimulationError, CreateAngularContactBearing, races, run_solver, SolverSettings
 
 
 def run(axial, sim_time, drag=True, step=None):

@@ -18,9 +18,8 @@ from pathlib import Path
 import numpy as np
 import exudyn as exu
 
-from exudyn_bearing import REFERENCE_BEARING, races, solve_load_distribution
-from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.runner import SolverSettings, run_solver
+from exudyn_bearing import (REFERENCE_BEARING, CreateAngularContactBearing, races, run_solver,
+                            solve_load_distribution, SolverSettings)
 
 
 def main():

@@ -18,10 +18,8 @@ import json
 import time
 from pathlib import Path
 
-from contact.ballrace import ContactLaw
-from exudyn_bearing import __version__, simulate
-from exudyn_bearing.cage import CageModel
-from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG
+from exudyn_bearing import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, __version__, CageModel,
+                            ContactLaw, simulate)
 
 AXIAL = 667.0
 SPEEDS = (10000.0, 20000.0, 28000.0, 40000.0, 48000.0, 60000.0, 72000.0)

@@ -23,10 +23,8 @@ import numpy as np
 import exudyn as exu
 from exudyn.utilities import InertiaCylinder
 
-from exudyn_bearing import REFERENCE_BEARING, races
-from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.runner import SolverSettings, run_solver
-from exudyn_bearing.shaft import ShaftBearing, solve_shaft
+from exudyn_bearing import (REFERENCE_BEARING, CreateAngularContactBearing, races, run_solver, ShaftBearing,
+                            solve_shaft, SolverSettings)
 
 SPAN = 0.2  #: bearing centre distance, m
 GEAR_Z = 0.03  #: gear mid-plane on the shaft axis, m (off-centre: the bearings share the load unequally)

@@ -13,9 +13,7 @@ from pathlib import Path
 import numpy as np
 import exudyn as exu
 
-from exudyn_bearing import races
-from exudyn_bearing.builder import CreateAngularContactBearing
-from exudyn_bearing.runner import SolverSettings, run_solver
+from exudyn_bearing import CreateAngularContactBearing, races, run_solver, SolverSettings
 
 RUN_UP, DROP_TIME = 0.05, 0.1  # s
 

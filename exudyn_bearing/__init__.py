@@ -4,23 +4,51 @@ Physics lives in the ``contact`` package (pure numpy/scipy); this package descri
 bearings, solves the quasi-static load distribution and builds Exudyn models::
 
     import exudyn as exu
-    from exudyn_bearing import CreateAngularContactBearing, races, run_solver
+    from exudyn_bearing import races, run_solver   # registers mbs.CreateAngularContactBearing
 
     SC = exu.SystemContainer(); mbs = SC.AddSystem()
-    brg = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800), axialForce=1300)
+    brg = mbs.CreateAngularContactBearing(innerRace=races.Driven(rpm=1800), axialForce=1300)
     mbs.Assemble()
     run_solver(mbs, [brg], 0.1)
     print(brg.Results(mbs).summary())
 """
 from contact.ballrace import ContactLaw
+from contact.lubricant import Lubricant
 from . import races
 from .bearing import BallDrag, Bearing, Material, STEEL
 from .bearingfile import BearingFile, dumps_bearing, load_bearing, loads_bearing, save_bearing
 from .builder import BearingHandle, CreateAngularContactBearing
 from .cage import CageModel
-from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM
+from .outputs import BearingResults, TractionCoefficientWarning
+from .plots import plot_run, plot_skid_curve
+from .presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
+                      REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM, SPINDLE_40MM_BEARING)
+from .quasidynamic import AzimuthStates, combined_load_state
 from .quasistatic import LoadDistribution, QuasiStaticError, solve_load_distribution
-from .runner import BearingSimulationError, SolverSettings, run_solver, simulate
+from .runner import BearingSimulationError, RunInfo, SimulationSummary, SolverSettings, run_solver, simulate
+from .shaft import ShaftBearing, ShaftEquilibrium, solve_shaft
+from .skidmap import SkidMap, hirano_minimum_axial, skid_map
 from .steady import SteadyState, gyroscopic_minimum_axial, steady_state
 
 __version__ = "0.1.0"
+
+__all__ = [
+    # building a scene (also mbs.CreateAngularContactBearing once the package is imported)
+    "CreateAngularContactBearing", "BearingHandle", "races", "run_solver", "SolverSettings", "RunInfo",
+    # bearings, lubricants, physics options and presets
+    "Bearing", "Material", "STEEL", "M50_STEEL", "Lubricant", "BallDrag", "CageModel", "ContactLaw",
+    "REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM",
+    "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG",
+    # bearing files
+    "BearingFile", "load_bearing", "loads_bearing", "save_bearing", "dumps_bearing",
+    # solvers without time integration
+    "solve_load_distribution", "LoadDistribution", "steady_state", "SteadyState", "combined_load_state",
+    "AzimuthStates", "solve_shaft", "ShaftBearing", "ShaftEquilibrium",
+    # runs, results and studies
+    "simulate", "SimulationSummary", "BearingResults", "skid_map", "SkidMap", "plot_run", "plot_skid_curve",
+    # skid criteria
+    "gyroscopic_minimum_axial", "hirano_minimum_axial",
+    # errors and warnings
+    "BearingSimulationError", "QuasiStaticError", "TractionCoefficientWarning",
+    "__version__",
+]

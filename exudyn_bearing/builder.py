@@ -1,12 +1,15 @@
 """Add a complete angular-contact ball bearing to an Exudyn ``mbs`` (MODEL.md §1–§9).
 
-Example::
+Example (importing the package registers ``mbs.CreateAngularContactBearing`` on Exudyn's
+``MainSystem``, as Exudyn registers its own ``Create...`` functions; the free function
+``CreateAngularContactBearing(mbs, ...)`` is the same)::
 
     import exudyn as exu
-    from exudyn_bearing import CreateAngularContactBearing, races
+    import exudyn_bearing
+    from exudyn_bearing import races
 
     SC = exu.SystemContainer(); mbs = SC.AddSystem()
-    brg = CreateAngularContactBearing(mbs, innerRace=races.Driven(rpm=1800), axialForce=1300)
+    brg = mbs.CreateAngularContactBearing(innerRace=races.Driven(rpm=1800), axialForce=1300)
     mbs.Assemble()
     ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.runner
     res = brg.Results(mbs)
@@ -444,3 +447,21 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
                          connector, nodes, loads, steady, quasi)
+
+
+def _register_on_main_system():
+    """Bind :func:`CreateAngularContactBearing` as ``MainSystem.CreateAngularContactBearing``
+    through Exudyn's extension registry (``exudyn.misc.extensionRegistry``, Exudyn 1.13), the
+    mechanism of Exudyn's own ``mbs.Create...`` functions; a name Exudyn already has is not
+    replaced (the registry raises, and the free function stays)."""
+    try:
+        import exudyn as exu
+        from exudyn.misc.extensionRegistry import extends, install
+    except ImportError:  # an Exudyn without the registry: the free function only
+        return
+    extends(exu.MainSystem, name="CreateAngularContactBearing")(CreateAngularContactBearing)
+    install()
+
+
+_register_on_main_system()
+

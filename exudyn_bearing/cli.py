@@ -4,6 +4,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 
 import numpy as np
@@ -237,7 +238,10 @@ class _DefaultsFormatter(argparse.HelpFormatter):
 def build_parser() -> argparse.ArgumentParser:
     from importlib.metadata import PackageNotFoundError, version
 
-    parser = argparse.ArgumentParser(prog="python -m exudyn_bearing",
+    # the installed command names itself; ``python -m exudyn_bearing`` runs __main__.py
+    invoked = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else ""
+    parser = argparse.ArgumentParser(prog="exudyn-bearing" if invoked.startswith("exudyn-bearing")
+                                     else "python -m exudyn_bearing",
                                      description="Skidding analysis of angular-contact ball bearings with Exudyn.")
     try:
         versions = f"exudyn-bearing {version('exudyn-bearing')} (exudyn {version('exudyn')})"
@@ -337,8 +341,6 @@ def main(argv=None) -> int:
         sys.stdout.flush()  # a closed pipe shows here, not as an error at interpreter exit
         return code
     except BrokenPipeError:  # e.g. `loads ... | head`: the reader went away, nothing to report
-        import os
-
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except ValueError as err:
