@@ -118,8 +118,8 @@ def _simulate(args) -> int:
 
 def _steady(args) -> int:
     from .records import units_of
-    from .skidmap import hirano_minimum_axial
-    from .steady import gyroscopic_minimum_axial, steady_state
+    from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
+    from .steady import steady_state
 
     setup = _setup(args.bearing)
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,

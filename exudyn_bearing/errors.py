@@ -1,6 +1,17 @@
-"""Errors raised by bearing simulations."""
+"""The package's errors and warnings, in one place (docs/ARCHITECTURE.md)."""
+
+__all__ = ["BearingSimulationError", "QuasiStaticError", "TractionCoefficientWarning"]
 
 
 class BearingSimulationError(RuntimeError):
     """A run diverged or left the physically meaningful range; the message says where
     (which ball, contact or quantity) and what to change."""
+
+
+class QuasiStaticError(RuntimeError):
+    """The Newton–Raphson load-distribution solve did not converge."""
+
+
+class TractionCoefficientWarning(UserWarning):
+    """A contact's traction coefficient exceeded
+    :data:`exudyn_bearing.outputs.TRACTION_COEFFICIENT_LIMIT`."""

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.kinematics import cross, rolling_cage_speed
+from .errors import TractionCoefficientWarning
 
 __all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "TRACTION_COEFFICIENT_LIMIT",
            "TractionCoefficientWarning"]
@@ -18,10 +19,6 @@ __all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "TRACTIO
 #: Traction coefficient |f|/Q above which no real oil transmits the traction (MODEL.md §8:
 #: measured EHL traction coefficients stay below ~0.1-0.15); a run above it gets a warning.
 TRACTION_COEFFICIENT_LIMIT = 0.15
-
-
-class TractionCoefficientWarning(UserWarning):
-    """A contact's traction coefficient exceeded :data:`TRACTION_COEFFICIENT_LIMIT`."""
 
 
 def cage_slip(reference_speed, cage_speed):

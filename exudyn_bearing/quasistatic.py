@@ -29,13 +29,10 @@ import numpy as np
 from contact import geometry
 from contact.hertz import effective_ball_stiffness
 from .bearing import Bearing
+from .errors import QuasiStaticError
 from .records import units_of
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
-
-
-class QuasiStaticError(RuntimeError):
-    """The Newton–Raphson load-distribution solve did not converge."""
 
 
 

@@ -26,9 +26,10 @@ from .bearing import BallDrag, Bearing
 from .cage import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .records import inputs_record, units_of
-from .steady import gyroscopic_minimum_axial, steady_state
+from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
+from .steady import steady_state
 
-__all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range", "hirano_minimum_axial"]
+__all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
 
 #: Default grid of ``python -m exudyn_bearing skid-map`` (about 5 minutes on 2 cores).
 DEFAULT_AXIAL = (300.0, 800.0, 1500.0, 3000.0)
@@ -57,13 +58,6 @@ def parse_range(text: str) -> list[float]:
     except ValueError:
         raise ValueError(f"range must be 'start:stop:count' (start <= stop, count >= 1) or 'a,b,c' of finite "
                          f"numbers, got {text!r}") from None
-
-
-def hirano_minimum_axial(bearing: Bearing, rpm: float) -> float:
-    """Hirano's criterion as the paper quotes it: gross sliding when Z F_c / F_a > 0.1,
-    i.e. F_a,min = 10 Z F_c with F_c = m r_p w_c² at the nominal cage speed, N."""
-    cage = bearing.cage_speed(rpm * math.pi / 30.0)
-    return 10.0 * bearing.balls * bearing.ball_mass * bearing.pitch_radius * cage ** 2
 
 
 @dataclass

@@ -7,7 +7,8 @@ import pytest
 
 from exudyn_bearing import REFERENCE_BEARING as B
 from exudyn_bearing import skidmap
-from exudyn_bearing.skidmap import SkidMap, SkidPoint, hirano_minimum_axial, parse_range, skid_map
+from exudyn_bearing.criteria import hirano_minimum_axial
+from exudyn_bearing.skidmap import SkidMap, SkidPoint, parse_range, skid_map
 
 SHORT = 0.003  # s simulated per point: these tests check the engine, not the physics
 

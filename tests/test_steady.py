@@ -15,7 +15,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 
 from contact.kinematics import rolling_cage_speed  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING as B, REFERENCE_LUBRICANT, steady_state  # noqa: E402
-from exudyn_bearing.steady import gyroscopic_minimum_axial  # noqa: E402
+from exudyn_bearing.criteria import gyroscopic_minimum_axial  # noqa: E402
 from reduced_balance import solve_balance  # noqa: E402
 
 RPM = 1800.0
