@@ -5,6 +5,7 @@ import argparse
 import json
 import math
 import os
+import re
 import sys
 
 import numpy as np
@@ -64,6 +65,8 @@ def _loads(args) -> int:
 def _simulate(args) -> int:
     from .runner import SolverSettings, simulate
 
+    if args.axial == 0 and args.radial == 0:
+        raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
     setup = _setup(args.bearing)
     if args.plot:
         from pathlib import Path
@@ -121,6 +124,12 @@ def _steady(args) -> int:
     from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
     from .steady import steady_state
 
+    if args.radial != 0:
+        raise ValueError(f"--radial {args.radial:g}: steady solves the pure axial load (MODEL.md §12); for a combined "
+                         f"load run 'simulate --axial A --radial {args.radial:g} --start steady', which starts from "
+                         "every ball's own balance (MODEL.md §12a)")
+    if not args.axial > 0:
+        raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial load, N")
     setup = _setup(args.bearing)
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
                          drag=None if args.no_drag else setup.drag, contact_law=_law(args), cage=setup.cage)
@@ -213,6 +222,38 @@ def _law(args, **kw):
                       thermal_film=args.thermal_film, **kw)
 
 
+#: the loads' help: units and sign conventions, the same in every command
+AXIAL_HELP = ("axial force on the inner race, N, along the bearing axis (+z of the bearing frame): it presses the "
+              "inner race against the balls' contact side; >= 0 (a load the other way: mount the bearing the other "
+              "way round)")
+RADIAL_HELP = "radial force on the inner race, N, along the bearing frame's x axis"
+#: options whose value may be a list starting with a minus sign ("-300,300", "-300:300:5")
+_LIST_OPTIONS = ("--axial", "--radial", "--rpm", "--moment")
+_NUMBER_LIST = re.compile(r"^-[0-9.][0-9.eE+\-]*([,:][-+]?[0-9.][0-9.eE+\-]*)*$")
+
+
+def _join_negative_values(argv):
+    """``--axial -300,300`` → ``--axial=-300,300``: argparse reads a value starting with "-"
+    that is not a plain number as an option."""
+    out = []
+    it = iter(argv)
+    for token in it:
+        if token in _LIST_OPTIONS:
+            nxt = next(it, None)
+            if nxt is not None and _NUMBER_LIST.match(nxt) and not _PLAIN_NUMBER.match(nxt):
+                out.append(f"{token}={nxt}")
+                continue
+            out.append(token)
+            if nxt is not None:
+                out.append(nxt)
+            continue
+        out.append(token)
+    return out
+
+
+_PLAIN_NUMBER = re.compile(r"^-?[0-9.]+([eE][-+]?[0-9]+)?$")
+
+
 def _traction_option(p) -> None:
     p.add_argument("--traction", choices=TRACTION_MODELS, default=ContactLawDefaults.traction,
                    help="ball-race traction law (MODEL.md §6, §6a): crook-limited = Crook with the lubricant's "
@@ -256,8 +297,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     sub.add_parser = add_parser
     p = sub.add_parser("loads", help="quasi-static load distribution (MODEL.md §4)")
-    p.add_argument("--axial", type=float, default=0.0, help="axial force on the inner race, N")
-    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)
+    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
     p.add_argument("--rpm", type=float, default=0.0, help="inner-race speed, rev/min (0: no centrifugal force)")
     p.add_argument("--moment", type=float, nargs=2, metavar=("MX", "MY"), help="tilting moment, N m (frees the tilt)")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
@@ -270,8 +311,8 @@ def build_parser() -> argparse.ArgumentParser:
     from .runner import SOLVERS
 
     p = sub.add_parser("simulate", help="dynamic Exudyn run of one bearing (MODEL.md §1–§7)")
-    p.add_argument("--axial", type=float, required=True, help="axial force on the inner race, N")
-    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)
+    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
     p.add_argument("--time", type=float, default=0.05, help="simulated time, s")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
@@ -291,7 +332,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
     p.set_defaults(func=_simulate)
     p = sub.add_parser("steady", help="steady rolling state under pure axial load, no time integration (MODEL.md §12)")
-    p.add_argument("--axial", type=float, required=True, help="axial force on the inner race, N")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP + "; > 0 here")
+    p.add_argument("--radial", type=float, default=0.0,
+                   help="must be 0: steady solves pure axial load; for a combined load use "
+                        "'simulate --radial R --start steady' (every ball's own balance, MODEL.md §12a)")
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
@@ -299,8 +343,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(func=_steady)
     p = sub.add_parser("render", help="render a run to PNG frames (headless: Xvfb/OpenGL or the raytracer)")
-    p.add_argument("--axial", type=float, default=1300.0, help="axial force on the inner race, N")
-    p.add_argument("--radial", type=float, default=0.0, help="radial force on the inner race, N")
+    p.add_argument("--axial", type=float, default=1300.0, help=AXIAL_HELP)
+    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min")
     p.add_argument("--time", type=float, default=0.002, help="simulated time, s")
     p.add_argument("--frames", type=int, default=4, help="number of frames spread over the run")
@@ -317,8 +361,9 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("skid-map", help="skid-risk map over load and speed (the main job)")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     p.add_argument("--axial", default=",".join(f"{v:g}" for v in skidmap.DEFAULT_AXIAL),
-                   help="axial loads, N: start:stop:count or a,b,c")
-    p.add_argument("--radial", default="0", help="radial loads, N: start:stop:count or a,b,c")
+                   help="axial loads, N: start:stop:count or a,b,c (" + AXIAL_HELP.split(", N, ", 1)[1] + ")")
+    p.add_argument("--radial", default="0", help="radial loads, N: start:stop:count or a,b,c (along the bearing "
+                                                 "frame's x axis)")
     p.add_argument("--rpm", default=",".join(f"{v:g}" for v in skidmap.DEFAULT_RPM), help="inner-race speeds, rpm")
     p.add_argument("--time", type=float, default=skidmap.DEFAULT_TIME,
                    help="fixed simulated time per point, s (default: until settled, 0.1 s doubling up to "
@@ -335,7 +380,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_join_negative_values(sys.argv[1:] if argv is None else list(argv)))
     try:
         code = args.func(args)
         sys.stdout.flush()  # a closed pipe shows here, not as an error at interpreter exit

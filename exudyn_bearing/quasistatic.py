@@ -97,7 +97,10 @@ def _check_load(name: str, value) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
         raise ValueError(f"{name} must be a finite number, got {value!r}")
     if value < 0:
-        raise ValueError(f"{name} must be non-negative, got {value!r} (reverse the frame instead)")
+        raise ValueError(f"{name} must be non-negative, got {value!r}: it acts along the bearing axis (+z of the "
+                         "bearing frame); for a load the other way mount the bearing the other way round (in a "
+                         "scene: rotationMatrix=np.diag([1, -1, -1]))" if name == "axial" else
+                         f"{name} must be non-negative, got {value!r} (reverse the frame instead)")
     return float(value)
 
 

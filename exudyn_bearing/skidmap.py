@@ -414,7 +414,9 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
         bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
                or (low is not None and v < low)]
         if bad:
-            raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}")
+            raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}"
+                             + (" (the axial load acts along the bearing axis; for a load the other way mount "
+                                "the bearing the other way round)" if name == "axial" else ""))
     if time is not None and not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
         raise ValueError(f"time must be a positive number of seconds (or None: until settled), got {time!r}")
     grid = [SkidPoint(float(a), float(r), float(n), None if time is None else float(time))

@@ -523,3 +523,47 @@ def test_output_into_a_closed_pipe_is_not_an_error(tmp_path):
     proc.stdout.close()  # before the child writes anything (it takes ~1 s to start)
     _, err = proc.communicate(timeout=120)
     assert "Traceback" not in err and "BrokenPipe" not in err, err[-2000:]
+
+
+# ---------------------------------------------------------------------------------------
+# Commands that agree (loads default to 0, negative and list values parse, units and signs)
+# ---------------------------------------------------------------------------------------
+def test_loads_default_to_zero_and_a_radial_only_run_needs_no_axial(tmp_path):
+    data, _ = cli_json("simulate", "--radial", "1000", "--time", "0.002", cwd=tmp_path)
+    assert data["axial"] == 0.0 and data["radial"] == 1000.0 and data["steps"] > 1
+    proc, _ = cli("simulate", "--time", "0.002", cwd=tmp_path)
+    assert proc.returncode == 2 and "no load" in proc.stderr and "--axial" in proc.stderr, proc.stderr
+
+
+def test_steady_with_a_radial_load_says_what_it_solves_and_where_to_go(tmp_path):
+    proc, _ = cli("steady", "--axial", "300", "--radial", "200", cwd=tmp_path)
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert "pure axial" in proc.stderr and "simulate" in proc.stderr and "--start steady" in proc.stderr
+    assert "unrecognized" not in proc.stderr
+    proc, _ = cli("steady", cwd=tmp_path)
+    assert proc.returncode == 2 and "--axial must be positive" in proc.stderr, proc.stderr
+
+
+@pytest.mark.parametrize("args", [["skid-map", "--axial", "-300,300", "--rpm", "900", "--out", "m"],
+                                  ["skid-map", "--axial", "300", "--radial", "-100:100:3", "--rpm", "900", "--out", "m"],
+                                  ["loads", "--axial", "-300"], ["simulate", "--axial", "-300", "--time", "0.002"]],
+                         ids=["list", "range", "loads", "simulate"])
+def test_negative_values_parse_and_get_a_message_about_the_direction(args, tmp_path):
+    """argparse alone reads "-300,300" as an option ("expected one argument"); the value must
+    reach the command, whose message names the key (and, for the axial load, the way round)."""
+    proc, _ = cli(*args, cwd=tmp_path, timeout=120)
+    assert proc.returncode == 2, proc.stdout[-1000:]
+    assert "expected one argument" not in proc.stderr and "Traceback" not in proc.stderr
+    key = "radial" if "-100:100:3" in args else "axial"
+    assert re.search(rf"^error: .*{key}", proc.stderr, re.M | re.I), proc.stderr
+    if key == "axial":
+        assert "other way round" in proc.stderr, proc.stderr
+
+
+def test_help_states_units_and_sign_conventions(tmp_path):
+    for command in ("loads", "simulate", "steady", "render", "skid-map"):
+        proc, _ = cli(command, "--help", cwd=tmp_path)
+        text = " ".join(proc.stdout.split())
+        assert "N" in text and "bearing axis" in text, (command, text)
+        if command != "steady":
+            assert "x axis" in text, (command, text)
