@@ -25,6 +25,7 @@ import time
 from pathlib import Path
 
 from contact.ballrace import ContactLaw
+from exudyn_bearing.outputs import settled_label
 from exudyn_bearing import simulate
 from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, SPINDLE_40MM_BEARING
 from exudyn_bearing.records import inputs_record
@@ -102,7 +103,7 @@ def table(rows):
         lines.append(f"| {r['rpm']:.0f} | {m['traction']:.2f} | {m['rolling_resistance']:.2f} | {m['ball_drag']:.2f} | "
                      f"**{m['drive']:.2f}** | {s['rolling']:.2f} | {s['sliding']:.2f} | **{skf_total:.2f}** | "
                      f"{p0:.2f}–{p1:.2f} | {p2:.2f} | **{p0 + p2:.1f}–{p1 + p2:.1f}** | "
-                     f"{m['drive'] / skf_total:.2f} | {'yes' if r['settled'] else 'no'} |")
+                     f"{m['drive'] / skf_total:.2f} | {settled_label(r['settled'])} |")
     return "\n".join(lines)
 
 

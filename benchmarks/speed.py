@@ -27,6 +27,7 @@ from exudyn.utilities import *  # noqa: F401,F403  (Exudyn scene style)
 import exudyn.machines as machines
 
 from contact.ballrace import ContactLaw
+from exudyn_bearing.outputs import settled_label
 from exudyn_bearing import REFERENCE_BEARING as B, CreateAngularContactBearing, SolverSettings, races, run_solver
 
 
@@ -160,7 +161,7 @@ def matrix(sim_time, names, law=None, settings=None):
         rows.append(f"| {name} | {text} | {wall / sim_time * 0.1:.2f} s ({wall / max(revs, 1e-12):.2f} s per cage rev) "
                     f"| {cpu / sim_time * 0.1:.2f} s "
                     f"| {run.steps} / {nominal} ({run.solver['step']:.3g} s) | {run.newton_iterations} | {run.jacobian_updates} | "
-                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {'yes' if run.settled else 'no'} | {ratio} "
+                    f"{run.kinematic_cage_slip_percent:.3f} % ± {est:.2g} pp | {settled_label(run.settled)} | {ratio} "
                     f"| {cpu_ratio} |")
     print(f"| case | scene | wall per 0.1 s | CPU per 0.1 s | steps / nominal | Newton its | Jacobians | kinematic cage "
           f"slip ± half-step estimate | settled | wall / (a) | CPU / (a) |")

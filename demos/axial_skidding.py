@@ -15,7 +15,8 @@ from pathlib import Path
 
 import exudyn as exu
 
-from exudyn_bearing import BearingSimulationError, CreateAngularContactBearing, races, run_solver, SolverSettings
+from exudyn_bearing import (BearingSimulationError, CreateAngularContactBearing, races, run_solver, settled_label,
+                            SolverSettings)
 
 
 def run(axial, sim_time, drag=True, step=None):
@@ -49,7 +50,7 @@ def report(rows, failed=()):
              "simulated (s) | wall (s) |", "|---:|---:|---:|---:|---:|:---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r['axial_N']:.0f} | {r['kinematic_cage_slip_percent']:.3f} | {r['cage_slip_percent']:.3f} | "
-                     f"{r['attitude_xz_deg']:.2f} | {r['attitude_yz_deg']:.2f} | {'yes' if r['settled'] else 'no'} | "
+                     f"{r['attitude_xz_deg']:.2f} | {r['attitude_yz_deg']:.2f} | {settled_label(r['settled'])} | "
                      f"{r['time_s']:g} | {r['wall_s']:.0f} |")
     for fa, err in failed:
         lines.append(f"| {fa:.0f} | failed: {err} | | | | | | |")

@@ -18,7 +18,7 @@ import json
 import time
 from pathlib import Path
 
-from exudyn_bearing import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, __version__, CageModel,
+from exudyn_bearing import (settled_label, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, __version__, CageModel,
                             ContactLaw, simulate)
 
 AXIAL = 667.0
@@ -52,7 +52,7 @@ def table(rows):
                      f"{r['steady_kinematic_cage_slip_percent']:.3f} | {r['cage_slip_percent']:.2f} | "
                      f"{r['traction_W']:.1f} | {r['rolling_resistance_W']:.1f} | {r['ball_drag_W']:.1f} | "
                      f"{r['cage_W']:.2f} | {r['total_W']:.1f} | {r['drive_power_W']:.1f} | "
-                     f"{'yes' if r['settled'] else 'no'} | {r['step_s']:.3g} | {r['wall_s']:.1f} |")
+                     f"{settled_label(r['settled'])} | {r['step_s']:.3g} | {r['wall_s']:.1f} |")
     return "\n".join(lines)
 
 

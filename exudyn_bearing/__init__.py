@@ -21,7 +21,7 @@ from .builder import BearingHandle, CreateAngularContactBearing
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
-from .outputs import BearingResults
+from .outputs import BearingResults, settled_label
 from .plots import plot_run, plot_skid_curve
 from .presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
                       REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM, SPINDLE_40MM_BEARING)
@@ -47,7 +47,7 @@ __all__ = [
     "solve_load_distribution", "LoadDistribution", "steady_state", "SteadyState", "combined_load_state",
     "AzimuthStates", "solve_shaft", "ShaftBearing", "ShaftEquilibrium",
     # runs, results and studies
-    "simulate", "SimulationSummary", "BearingResults", "skid_map", "SkidMap", "plot_run", "plot_skid_curve",
+    "simulate", "SimulationSummary", "BearingResults", "settled_label", "skid_map", "SkidMap", "plot_run", "plot_skid_curve",
     # skid criteria
     "gyroscopic_minimum_axial", "hirano_minimum_axial",
     # errors and warnings

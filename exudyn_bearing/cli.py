@@ -96,7 +96,8 @@ def _simulate(args) -> int:
     print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %")
     print(f"  cage speed                          {data['cage_speed']:8.3f} rad/s "
           f"(nominal {data['cage_speed_nominal']:.3f})")
-    print(f"  settled                             {'yes' if data['settled'] else 'NO (still drifting: run longer)'}")
+    print(f"  settled                             " + {True: "yes", False: "NO (still drifting: run longer)",
+                                                            None: "too short to judge (runs under 0.05 s)"}[data["settled"]])
     d = data["details"]
     print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
     loss = data["power_loss_W"]

@@ -13,7 +13,7 @@ import numpy as np
 from contact.kinematics import cross, rolling_cage_speed
 from .errors import TractionCoefficientWarning
 
-__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "TRACTION_COEFFICIENT_LIMIT",
+__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "settled_label", "MINIMUM_JUDGING_TIME", "TRACTION_COEFFICIENT_LIMIT",
            "TractionCoefficientWarning"]
 
 #: Traction coefficient |f|/Q above which no real oil transmits the traction (MODEL.md §8:
@@ -29,6 +29,15 @@ def cage_slip(reference_speed, cage_speed):
     mean = 0.5 * (cage_speed + reference_speed)
     safe = np.where(mean == 0, 1.0, mean)
     return np.where(mean == 0, 0.0, 100.0 * (reference_speed - cage_speed) / safe)
+
+
+#: shortest run whose settling is judged, s: :meth:`BearingResults.settled` is None below it
+MINIMUM_JUDGING_TIME = 0.05
+
+
+def settled_label(value) -> str:
+    """'yes', 'no' or 'too short to judge' for a :meth:`BearingResults.settled` value."""
+    return "too short to judge" if value is None else ("yes" if value else "no")
 
 
 def settled(time, values, tolerance, window=1 / 6):
@@ -157,13 +166,13 @@ class BearingResults:
             p = p + self.land_drive
         return p
 
-    def settled(self, tolerance_percent=0.1, minimum_time=0.05) -> bool:
-        """The run lasted at least ``minimum_time`` s (shorter windows hide slow drifts)
-        and neither the cage speed (in % of itself) nor the kinematic cage slip (in
-        percentage points) drifted by more than ``tolerance_percent`` between the last
-        sixth of the run and the sixth before it."""
+    def settled(self, tolerance_percent=0.1, minimum_time=MINIMUM_JUDGING_TIME) -> bool | None:
+        """True when neither the cage speed (in % of itself) nor the kinematic cage slip (in
+        percentage points) drifted by more than ``tolerance_percent`` between the last sixth
+        of the run and the sixth before it, False when one did; None — too short to judge —
+        for a run shorter than ``minimum_time`` s (its sixths would hide slow drifts)."""
         if self.time[-1] - self.time[0] < minimum_time:
-            return False
+            return None
         cage_percent = 100.0 * self.cage_speed / max(abs(float(np.mean(self.cage_speed))), 1e-300)
         return (settled(self.time, cage_percent, tolerance_percent)
                 and settled(self.time, self.kinematic_cage_slip_percent, tolerance_percent))

@@ -348,7 +348,8 @@ class SimulationSummary:
     kinematic_cage_slip_percent: float
     cage_speed: float
     cage_speed_nominal: float
-    settled: bool
+    #: True / False; None: too short to judge (shorter than 0.05 s, :meth:`BearingResults.settled`)
+    settled: bool | None
     wall_time_s: float
     steps: int
     solver: dict

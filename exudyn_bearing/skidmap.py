@@ -25,6 +25,7 @@ from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing
 from .cage import CageModel
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .outputs import settled_label
 from .records import inputs_record, units_of
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .steady import steady_state
@@ -142,7 +143,9 @@ class SkidMap:
                 if lo.kinematic_cage_slip_percent >= level > hi.kinematic_cage_slip_percent:
                     s0, s1 = lo.kinematic_cage_slip_percent, hi.kinematic_cage_slip_percent
                     estimate = lo.axial + (s0 - level) * (hi.axial - lo.axial) / (s0 - s1)
-                    note = "interpolated" + ("" if lo.settled and hi.settled else " (from unsettled points)")
+                    note = "interpolated" + ("" if lo.settled and hi.settled else
+                                             " (from unsettled points)" if False in (lo.settled, hi.settled) else
+                                             " (from points too short to judge)")
                     break
             else:
                 if pts and pts[0].kinematic_cage_slip_percent < level:
@@ -221,7 +224,8 @@ class SkidMap:
             writer = csv.writer(fh)
             writer.writerow(names)
             for p in rows:
-                writer.writerow([getattr(p, n) for n in names])
+                writer.writerow([("too short" if p.settled is None and p.error is None else "")
+                                 if n == "settled" and p.settled is None else getattr(p, n) for n in names])
         (out / "skid_map.md").write_text(self.markdown() + "\n")
         thresholds = self.refined or self.thresholds()
         record = {"thresholds": thresholds, "units": units_of(thresholds[0]) if thresholds else {},
@@ -235,8 +239,10 @@ class SkidMap:
     @staticmethod
     def _note(p) -> str:
         length = p.simulated_time if p.simulated_time is not None else p.time
-        if p.time is None and not p.settled:
+        if p.time is None and p.settled is False:
             return f"not settled after {length:g} s (the cap)"
+        if p.time is None and p.settled is None and p.error is None:
+            return f"too short to judge at the cap ({length:g} s)"
         return f"{length:g} s simulated" if length is not None else ""
 
     def markdown(self) -> str:
@@ -250,7 +256,7 @@ class SkidMap:
                 steady = p.steady_kinematic_cage_slip_percent
                 lines.append(f"| {p.rpm:g} | {p.radial:g} | {p.axial:g} | {p.kinematic_cage_slip_percent:.3f} | "
                              f"{'–' if steady is None else f'{steady:.3f}'} | {p.cage_slip_percent:.3f} | "
-                             f"{p.peak_ball_slip:.4f} | {'yes' if p.settled else 'no'} | {self._note(p)} |")
+                             f"{p.peak_ball_slip:.4f} | {settled_label(p.settled)} | {self._note(p)} |")
         lines += ["", "| rpm | F_r (N) | min. F_a for kinematic slip < 1 % (N) | bracket (N) | how | "
                       "dynamic at the bracket (%) | Hirano 10 Z F_c (N) | Jones, gyroscopic (N) |",
                   "|---:|---:|---:|---|---|---|---:|---:|"]
@@ -291,7 +297,7 @@ class SkidMap:
                 # log axis: slips at or below zero (pure rolling within rounding) sit on its floor
                 slip = [max(p.kinematic_cage_slip_percent, 1e-3) for p in pts]
                 line, = ax.plot([p.axial for p in pts], slip, "o-", label=f"{rpm:g} rpm, F_r {radial:g} N")
-                unsettled = [(p.axial, v) for p, v in zip(pts, slip) if not p.settled]
+                unsettled = [(p.axial, v) for p, v in zip(pts, slip) if p.settled is False]
                 if unsettled:
                     ax.plot(*zip(*unsettled), "x", color="red", ms=10)
                 t = thresholds.get((rpm, radial))
@@ -450,7 +456,7 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
             elapsed = _time.perf_counter() - start
             left = elapsed / finished * (len(todo) - finished)
             state = f"FAILED ({point.error})" if point.error else (
-                f"kinematic slip {point.kinematic_cage_slip_percent:.3f} %" + ("" if point.settled else " (not settled)"))
+                f"kinematic slip {point.kinematic_cage_slip_percent:.3f} %" + {True: "", False: " (not settled)", None: " (too short to judge)"}[point.settled])
             progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
                      f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
 

@@ -196,13 +196,14 @@ def test_noisy_cage_speed_is_settled():
 
 
 def test_short_runs_are_not_settled():
-    """Shorter than ``minimum_time`` (50 ms by default): not settled however flat."""
-    for span, expected in ((0.049, False), (0.051, True)):
+    """Shorter than ``minimum_time`` (50 ms by default): too short to judge (None) however
+    flat, a distinct value from False (drifting)."""
+    for span, expected in ((0.049, None), (0.051, True)):
         time = np.linspace(0.0, span, 601)
         assert results(time, np.full(601, 82.6)).settled() is expected
     time = np.linspace(0.0, 0.03, 601)
     assert results(time, np.full(601, 82.6)).settled(minimum_time=0.02)
-    assert not results(time, np.full(601, 82.6)).settled(minimum_time=0.04)
+    assert results(time, np.full(601, 82.6)).settled(minimum_time=0.04) is None
     # the window is measured from the first recorded time, not from 0
     time = 1.0 + np.linspace(0.0, 0.049, 601)
-    assert not results(time, np.full(601, 82.6)).settled()
+    assert results(time, np.full(601, 82.6)).settled() is None

@@ -150,8 +150,8 @@ def test_grid_is_validated_before_any_run(kw, name, tmp_path):
 
 def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
     """time=None: 0.1 s, 0.2 s, ... until settled, capped. With the first run and the cap
-    shrunk to 2 and 8 ms (shorter than the 50 ms a run needs to count as settled), the
-    point is run at 2, 4 and 8 ms and reported unsettled at the cap; the markdown says so."""
+    shrunk to 2 and 8 ms (shorter than the 50 ms a run needs to be judged), the point is run
+    at 2, 4 and 8 ms and reported too short to judge at the cap; the markdown says so."""
     monkeypatch.setattr(skidmap, "FIRST_TIME", 0.002)
     monkeypatch.setattr(skidmap, "MAX_TIME", 0.008)
     lengths = []
@@ -167,5 +167,5 @@ def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
     table = skid_map(axial=[1300.0], rpm=[1800.0], time=None, out=tmp_path, workers=1, progress=None, refine=False)
     assert lengths == [0.002, 0.004, 0.008]
     point = table.points[0]
-    assert point.simulated_time == 0.008 and point.settled is False and point.time is None
-    assert "not settled after 0.008 s (the cap)" in (tmp_path / "skid_map.md").read_text()
+    assert point.simulated_time == 0.008 and point.settled is None and point.time is None
+    assert "too short to judge at the cap (0.008 s)" in (tmp_path / "skid_map.md").read_text()
