@@ -668,9 +668,13 @@ def _race_contact(idx, c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_r
             sense = math.tanh(r_x * w_rel / 1e-3)
             m_r = -2.0 * f_r * r_x * sense
             f_b = f_r * (2.0 * r_x / ball_radius - 1.0) * sense
-    Fx = -q * nx + (fx + f_b) * t1x + fy * t2x
-    Fy = -q * ny + (fx + f_b) * t1y + fy * t2y
-    Fz = -q * nz + (fx + f_b) * t1z + fy * t2z
+    Fx = -q * nx + fx * t1x + fy * t2x
+    Fy = -q * ny + fx * t1y + fy * t2y
+    Fz = -q * nz + fx * t1z + fy * t2z
+    if f_b != 0.0:  # (a separate sum: the contact without rolling resistance stays bit for bit)
+        Fx += f_b * t1x
+        Fy += f_b * t1y
+        Fz += f_b * t1z
     force[ib, k, j, 0] = Fx
     force[ib, k, j, 1] = Fy
     force[ib, k, j, 2] = Fz
