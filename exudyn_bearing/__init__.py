@@ -47,7 +47,8 @@ __all__ = [
     "solve_load_distribution", "LoadDistribution", "steady_state", "SteadyState", "combined_load_state",
     "AzimuthStates", "solve_shaft", "ShaftBearing", "ShaftEquilibrium",
     # runs, results and studies
-    "simulate", "SimulationSummary", "BearingResults", "settled_label", "skid_map", "SkidMap", "plot_run", "plot_skid_curve",
+    "simulate", "SimulationSummary", "BearingResults", "settled_label", "skid_map", "SkidMap", "plot_run",
+    "plot_skid_curve",
     # skid criteria
     "gyroscopic_minimum_axial", "hirano_minimum_axial",
     # errors and warnings

@@ -170,10 +170,11 @@ def _check_force(name, value):
     """A constant force (N) or a function of time t in s returning N, as a function of t."""
     at_start = value(0.0) if callable(value) else value
     if not (isinstance(at_start, (int, float, np.floating, np.integer)) and math.isfinite(at_start) and at_start >= 0):
+        direction = "" if name != "axialForce" else (
+            "; it acts along the bearing axis (+z of the bearing frame): for a load the other way mount the bearing "
+            "the other way round (rotationMatrix=np.diag([1, -1, -1]))")
         raise ValueError(f"{name} must be a finite non-negative force in N (or a function of time returning one), "
-                         f"got {at_start!r}" + ("; it acts along the bearing axis (+z of the bearing frame): for a "
-                                                "load the other way mount the bearing the other way round "
-                                                "(rotationMatrix=np.diag([1, -1, -1]))" if name == "axialForce" else ""))
+                         f"got {at_start!r}{direction}")
     if callable(value):
         return value
     return lambda t, v=float(value): v

@@ -96,8 +96,9 @@ def _simulate(args) -> int:
     print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %")
     print(f"  cage speed                          {data['cage_speed']:8.3f} rad/s "
           f"(nominal {data['cage_speed_nominal']:.3f})")
-    print(f"  settled                             " + {True: "yes", False: "NO (still drifting: run longer)",
-                                                            None: "too short to judge (runs under 0.05 s)"}[data["settled"]])
+    verdict = {True: "yes", False: "NO (still drifting: run longer)",
+               None: "too short to judge (runs under 0.05 s)"}[data["settled"]]
+    print(f"  settled                             {verdict}")
     d = data["details"]
     print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
     loss = data["power_loss_W"]
@@ -130,7 +131,8 @@ def _steady(args) -> int:
                          f"load run 'simulate --axial A --radial {args.radial:g} --start steady', which starts from "
                          "every ball's own balance (MODEL.md §12a)")
     if not args.axial > 0:
-        raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial load, N")
+        raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
+                         "load, N")
     setup = _setup(args.bearing)
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
                          drag=None if args.no_drag else setup.drag, contact_law=_law(args), cage=setup.cage)

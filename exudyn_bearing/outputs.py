@@ -13,7 +13,8 @@ import numpy as np
 from contact.kinematics import cross, rolling_cage_speed
 from .errors import TractionCoefficientWarning
 
-__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "settled_label", "MINIMUM_JUDGING_TIME", "TRACTION_COEFFICIENT_LIMIT",
+__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "settled_label", "MINIMUM_JUDGING_TIME",
+           "TRACTION_COEFFICIENT_LIMIT",
            "TractionCoefficientWarning"]
 
 #: Traction coefficient |f|/Q above which no real oil transmits the traction (MODEL.md §8:

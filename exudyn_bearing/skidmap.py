@@ -456,7 +456,8 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
             elapsed = _time.perf_counter() - start
             left = elapsed / finished * (len(todo) - finished)
             state = f"FAILED ({point.error})" if point.error else (
-                f"kinematic slip {point.kinematic_cage_slip_percent:.3f} %" + {True: "", False: " (not settled)", None: " (too short to judge)"}[point.settled])
+                f"kinematic slip {point.kinematic_cage_slip_percent:.3f} %"
+                + {True: "", False: " (not settled)", None: " (too short to judge)"}[point.settled])
             progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
                      f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
 
