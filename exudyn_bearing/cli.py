@@ -13,6 +13,7 @@ import numpy as np
 from contact.ballrace import TRACTION_MODELS
 from contact.ballrace import ContactLaw as ContactLawDefaults
 from .bearingfile import BearingFile, load_bearing
+from .records import assumptions_line, assumptions_record
 from .presets import REFERENCE_BEARING
 
 
@@ -92,8 +93,9 @@ def _simulate(args) -> int:
         return 0
     print(f"Dynamic run: axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, "
           f"{args.time:g} s simulated (means over the last third)")
-    print(f"  cage slip (P19, nominal angle)      {data['cage_slip_percent']:8.3f} %")
-    print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %")
+    print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %   (the skid measure)")
+    print(f"  paper's P19 cage slip (nominal)     {data['cage_slip_percent']:8.3f} %")
+    print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
     print(f"  cage speed                          {data['cage_speed']:8.3f} rad/s "
           f"(nominal {data['cage_speed_nominal']:.3f})")
     verdict = {True: "yes", False: "NO (still drifting: run longer)",
@@ -137,6 +139,8 @@ def _steady(args) -> int:
     state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
                          drag=None if args.no_drag else setup.drag, contact_law=_law(args), cage=setup.cage)
     data = state.to_dict()
+    data["assumptions"] = assumptions_record(None if args.no_drag else setup.drag, _law(args), setup.lubricant)
+    data["units"].update(units_of({"assumptions": data["assumptions"]}))
     criteria = {"hirano_minimum_axial": hirano_minimum_axial(setup.bearing, args.rpm),
                 "gyroscopic_minimum_axial": gyroscopic_minimum_axial(
                     setup.bearing, args.rpm, traction_coefficient=setup.lubricant.limiting_shear_coefficient or 0.047)}
@@ -150,8 +154,9 @@ def _steady(args) -> int:
           f"{', no drag' if args.no_drag else ''}")
     if not state.converged:
         print(f"  NOT CONVERGED: {state.message}")
-    print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %")
-    print(f"  cage slip (P19, nominal angle)      {state.cage_slip_percent:8.3f} %")
+    print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %   (the skid measure)")
+    print(f"  paper's P19 cage slip (nominal)     {state.cage_slip_percent:8.3f} %")
+    print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
     print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
     print(f"  ball attitude xz / yz               {state.attitude_xz_deg:8.3f} / {state.attitude_yz_deg:.3f} deg")
     print(f"  inner / outer load                  {state.inner_load:8.2f} / {state.outer_load:.2f} N")

@@ -109,8 +109,8 @@ class BearingResults:
         """Means over the last ``fraction`` of the run and :meth:`settled`."""
         m = self.last(fraction)
         return {
-            "cage_slip_percent": float(np.mean(self.cage_slip_percent[m])),
             "kinematic_cage_slip_percent": float(np.mean(self.kinematic_cage_slip_percent[m])),
+            "cage_slip_percent": float(np.mean(self.cage_slip_percent[m])),
             "cage_speed": float(np.mean(self.cage_speed[m])),
             "cage_speed_nominal": float(np.mean(self.cage_speed_nominal[m])),
             "attitude_yz_deg": float(np.degrees(np.mean(self.attitude_yz[m]))),

@@ -54,7 +54,7 @@ def plot_run(res, path=None, title: str | None = None, fraction: float = 0.5):
     t_ms = 1e3 * res.time
     ax = axes[0, 0]
     ax.plot(t_ms, res.kinematic_cage_slip_percent, label="kinematic cage slip (MODEL.md §7)")
-    ax.plot(t_ms, res.cage_slip_percent, "--", label="cage slip P19 (nominal angle)")
+    ax.plot(t_ms, res.cage_slip_percent, "--", label="paper's P19 cage slip (nominal angle)")
     ax.set(xlabel="time (ms)", ylabel="cage slip (%)")
     ax.legend(fontsize=8)
     ax = axes[0, 1]
@@ -110,7 +110,7 @@ def plot_skid_curve(loads, kinematic_slip, p19_slip, attitude_xz=None, attitude_
     fig, axes = plt.subplots(1, 2 if with_angles else 1, figsize=(10 if with_angles else 5.5, 4), squeeze=False)
     ax1 = axes[0, 0]
     ax1.plot(loads, kinematic_slip, "o-", label="kinematic cage slip (MODEL.md §7)")
-    ax1.plot(loads, p19_slip, "s--", label="cage slip P19 (nominal angle)")
+    ax1.plot(loads, p19_slip, "s--", label="paper's P19 cage slip (nominal angle)")
     if reference is not None:
         label, ref_loads, ref_slip = reference
         ax1.plot(ref_loads, ref_slip, "^:", color="grey", label=f"kinematic cage slip, {label}")

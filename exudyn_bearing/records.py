@@ -63,3 +63,32 @@ def inputs_record(bearing, **inputs) -> dict:
     except PackageNotFoundError:
         package = "unknown"
     return {"bearing": repr(bearing)} | {k: repr(v) for k, v in inputs.items()} | {"version": package}
+
+
+def assumptions_record(drag=None, contact_law=None, lubricant=None) -> dict:
+    """The physics choices a reader needs beside the numbers (issue 34): the ball drag's
+    coefficient and oil volume fraction (None: no drag), whether rolling resistance and the
+    thermal film are on, and the traction law with its lubricant constants."""
+    out = {"ball_drag_coefficient": None if drag is None else float(drag.drag_coefficient),
+           "oil_volume_fraction": None if drag is None else float(drag.oil_volume_fraction)}
+    if contact_law is not None:
+        out |= {"traction": contact_law.traction, "rolling_resistance": bool(contact_law.rolling_resistance),
+                "thermal_film": bool(contact_law.thermal_film)}
+        if lubricant is not None:
+            out |= {"limiting_shear_coefficient": contact_law.limiting_shear_for(lubricant),
+                    "film_shear_modulus_coefficient": contact_law.film_modulus_for(lubricant)}
+    return out
+
+
+def assumptions_line(assumptions: dict) -> str:
+    """One line of text for :func:`assumptions_record`."""
+    x = assumptions.get("oil_volume_fraction")
+    drag = ("no ball drag" if x is None else
+            f"ball drag C_D {assumptions['ball_drag_coefficient']:g} at oil fraction {x:g}"
+            + (" (fully flooded)" if x == 1 else ""))
+    parts = [drag]
+    if "rolling_resistance" in assumptions:
+        parts.append(f"rolling resistance {'on' if assumptions['rolling_resistance'] else 'off'}")
+        parts.append(f"thermal film {'on' if assumptions['thermal_film'] else 'off'}")
+        parts.append(f"traction {assumptions['traction']}")
+    return "; ".join(parts)

@@ -17,7 +17,7 @@ from .errors import BearingSimulationError
 from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .predictor import VARIABLE as PREDICTOR_VARIABLE
 from .races import node_rows
-from .records import inputs_record, units_of
+from .records import assumptions_record, inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -332,7 +332,7 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
 
 
 #: summary entries that are SimulationSummary fields of their own (not repeated in ``details``)
-_SUMMARY_FIELDS = ("settled", "power_loss_W", "drive_power_W", "cage_slip_percent", "kinematic_cage_slip_percent",
+_SUMMARY_FIELDS = ("settled", "power_loss_W", "drive_power_W", "kinematic_cage_slip_percent", "cage_slip_percent",
                    "cage_speed", "cage_speed_nominal")
 
 
@@ -344,8 +344,11 @@ class SimulationSummary:
     radial: float
     rpm: float
     time: float
-    cage_slip_percent: float
+    #: the skid measure: cage slip against the pure-rolling speed of the balls' own contact
+    #: angles, % (MODEL.md §7)
     kinematic_cage_slip_percent: float
+    #: the paper's P19, against the nominal pure-rolling cage speed, %
+    cage_slip_percent: float
     cage_speed: float
     cage_speed_nominal: float
     #: True / False; None: too short to judge (shorter than 0.05 s, :meth:`BearingResults.settled`)
@@ -370,6 +373,9 @@ class SimulationSummary:
     #: CPU time of the run, all threads, s (the contact kernels run on numba's threads, so
     #: wall_time_s can be below it)
     cpu_time_s: float | None = None
+    #: the physics choices behind the numbers: drag oil fraction, rolling resistance, thermal
+    #: film, traction law (:func:`exudyn_bearing.records.assumptions_record`)
+    assumptions: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
         """JSON-ready: the fields (not the results object), ``units`` (the unit of every key)
@@ -423,8 +429,8 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
         estimate = {"method": "rerun at half the step (and half the tolerances)", "reference_step": finer.step,
                     "reference_wall_time_s": ref.wall_time_s}
         estimate.update({k: abs(float(summary[k]) - float(other[k])) for k in keys})
-    return SimulationSummary(axial, radial, rpm, time, summary["cage_slip_percent"],
-                             summary["kinematic_cage_slip_percent"], summary["cage_speed"],
+    return SimulationSummary(axial, radial, rpm, time, summary["kinematic_cage_slip_percent"],
+                             summary["cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
                              info.solver, info.newton_iterations, info.jacobian_updates,
                              # details: what the fields above do not already carry
@@ -432,4 +438,4 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
                              inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, initial_state=initial_state),
-                             info.cpu_time_s)
+                             info.cpu_time_s, assumptions_record(drag, contact_law, lubricant))

@@ -69,8 +69,8 @@ class SkidPoint:
     radial: float
     rpm: float
     time: float | None  #: requested simulated time, s; None: until settled
-    cage_slip_percent: float | None = None
-    kinematic_cage_slip_percent: float | None = None
+    kinematic_cage_slip_percent: float | None = None  #: the skid measure (MODEL.md §7), %
+    cage_slip_percent: float | None = None  #: the paper's P19 at the nominal angle, %
     peak_ball_slip: float | None = None  #: largest ball–race slip speed over the last third, m/s
     #: the steady-state solver's kinematic cage slip (pure axial load only, MODEL.md §12), %
     steady_kinematic_cage_slip_percent: float | None = None
@@ -246,7 +246,7 @@ class SkidMap:
         return f"{length:g} s simulated" if length is not None else ""
 
     def markdown(self) -> str:
-        lines = ["| rpm | F_r (N) | F_a (N) | kinematic cage slip (%) | steady state (%) | cage slip P19 (%) | "
+        lines = ["| rpm | F_r (N) | F_a (N) | kinematic cage slip (%) | steady state (%) | paper's P19 (%) | "
                  "peak ball slip (m/s) | settled | note |",
                  "|---:|---:|---:|---:|---:|---:|---:|:---:|---|"]
         for p in sorted(self.points, key=lambda p: (p.rpm, p.radial, p.axial)):

@@ -583,3 +583,41 @@ def test_short_runs_are_too_short_to_judge_not_drifting(reference_run, tmp_path)
     judged = simulate(axial=1300.0, rpm=1800.0, time=0.05)
     assert judged.settled is True  # from its steady start
     assert [settled_label(v) for v in (True, False, None)] == ["yes", "no", "too short to judge"]
+
+
+def test_the_skid_measure_is_read_first(reference_run, tmp_path):
+    """The kinematic cage slip (the skid measure, MODEL.md §7) comes before the paper's P19 in
+    the JSON, the text output, the skid map's CSV columns and markdown, and the summary."""
+    data, _ = reference_run
+    keys = list(data)
+    assert keys.index("kinematic_cage_slip_percent") < keys.index("cage_slip_percent")
+    proc, _ = cli("simulate", "--axial", "1300", "--time", "0.005", cwd=tmp_path)
+    text = proc.stdout
+    assert 0 <= text.index("kinematic cage slip") < text.index("paper's P19"), text
+    proc, _ = cli("skid-map", "--axial", "1300", "--rpm", "1800", "--time", "0.002", "--out", "m", "--workers", "1",
+                  "--no-refine", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    header = (tmp_path / "m" / "skid_map.csv").read_text().splitlines()[0].split(",")
+    assert header.index("kinematic_cage_slip_percent") < header.index("cage_slip_percent")
+    md = (tmp_path / "m" / "skid_map.md").read_text()
+    assert md.index("kinematic cage slip") < md.index("paper's P19")
+    from exudyn_bearing import simulate
+
+    summary = list(simulate(axial=1300.0, rpm=1800.0, time=0.002).results.summary())
+    assert summary.index("kinematic_cage_slip_percent") < summary.index("cage_slip_percent")
+
+
+def test_assumptions_are_stated_where_results_are_read(tmp_path):
+    """The drag's oil fraction and whether rolling resistance and the thermal film are on, in
+    the JSON (with units) and the text of simulate and steady (issue 34: a fully flooded drag
+    took 130 of 135 W of a 7205 at 12 000 rpm without saying so)."""
+    data, _ = cli_json("simulate", "--axial", "1300", "--time", "0.002", "--rolling-resistance", cwd=tmp_path)
+    a = data["assumptions"]
+    assert a["oil_volume_fraction"] == 1.0 and a["rolling_resistance"] is True and a["thermal_film"] is False
+    assert a["limiting_shear_coefficient"] == 0.047 and set(data["units"]["assumptions"]) == set(a)
+    data, _ = cli_json("steady", "--axial", "1300", "--no-drag", cwd=tmp_path)
+    assert data["assumptions"]["oil_volume_fraction"] is None and data["assumptions"]["rolling_resistance"] is False
+    assert "assumptions" in data["units"]
+    proc, _ = cli("simulate", "--axial", "1300", "--time", "0.002", cwd=tmp_path)
+    assert re.search(r"assumptions\s+ball drag C_D 0.5 at oil fraction 1 \(fully flooded\); rolling resistance off; "
+                     r"thermal film off", proc.stdout), proc.stdout
