@@ -136,10 +136,11 @@ def _steady(args) -> int:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
     setup = _setup(args.bearing)
-    state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm,
-                         drag=None if args.no_drag else setup.drag, contact_law=_law(args), cage=setup.cage)
+    law, drag = _law(args), None if args.no_drag else setup.drag
+    state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm, drag=drag, contact_law=law,
+                         cage=setup.cage)
     data = state.to_dict()
-    data["assumptions"] = assumptions_record(None if args.no_drag else setup.drag, _law(args), setup.lubricant)
+    data["assumptions"] = assumptions_record(drag, law, setup.lubricant)
     data["units"].update(units_of({"assumptions": data["assumptions"]}))
     criteria = {"hirano_minimum_axial": hirano_minimum_axial(setup.bearing, args.rpm),
                 "gyroscopic_minimum_axial": gyroscopic_minimum_axial(
@@ -235,8 +236,8 @@ AXIAL_HELP = ("axial force on the inner race, N, along the bearing axis (+z of t
               "inner race against the balls' contact side; >= 0 (a load the other way: mount the bearing the other "
               "way round)")
 RADIAL_HELP = "radial force on the inner race, N, along the bearing frame's x axis"
-#: options whose value may be a list starting with a minus sign ("-300,300", "-300:300:5")
-_LIST_OPTIONS = ("--axial", "--radial", "--rpm", "--moment")
+#: single-value options whose value may start with a minus sign ("-300,300", "-300:300:5")
+_LIST_OPTIONS = ("--axial", "--radial", "--rpm")
 _NUMBER_LIST = re.compile(r"^-[0-9.][0-9.eE+\-]*([,:][-+]?[0-9.][0-9.eE+\-]*)*$")
 
 
@@ -244,22 +245,12 @@ def _join_negative_values(argv):
     """``--axial -300,300`` → ``--axial=-300,300``: argparse reads a value starting with "-"
     that is not a plain number as an option."""
     out = []
-    it = iter(argv)
-    for token in it:
-        if token in _LIST_OPTIONS:
-            nxt = next(it, None)
-            if nxt is not None and _NUMBER_LIST.match(nxt) and not _PLAIN_NUMBER.match(nxt):
-                out.append(f"{token}={nxt}")
-                continue
+    for token in argv:
+        if out and out[-1] in _LIST_OPTIONS and _NUMBER_LIST.match(token):
+            out[-1] = f"{out[-1]}={token}"
+        else:
             out.append(token)
-            if nxt is not None:
-                out.append(nxt)
-            continue
-        out.append(token)
     return out
-
-
-_PLAIN_NUMBER = re.compile(r"^-?[0-9.]+([eE][-+]?[0-9]+)?$")
 
 
 def _traction_option(p) -> None:
