@@ -3,7 +3,7 @@
 Same states as ``benchmarks/traction_speed.py`` (32 contacts of the reference bearing per
 call). Prints, for pure Crook and the limited law (Λ of the reference oil): the worst and
 99th-percentile error of the accurate and fast rules against the accurate rule at order 32
-of the same law, and the time per call of the compiled kernel (``contact.compiled.
+of the same law, and the time per call of the compiled kernel (``contact.kernels.
 _crook_many``, the fast rule of the dynamic model's traction), median over ``--reps`` calls,
 both laws alternated in one run so the ratio is fair on a shared machine.
 
@@ -16,7 +16,8 @@ import time
 
 import numpy as np
 
-from contact import compiled
+from contact import kernels as compiled
+from contact.kernels import crook
 from contact.lubricant import REFERENCE_LUBRICANT as LUB
 from contact.traction import crook_traction
 from traction_speed import rel_errors, typical_states
@@ -24,15 +25,15 @@ from traction_speed import rel_errors, typical_states
 
 def kernel_times(calls, lam, reps):
     """Median and minimum time (us) of one compiled call of 32 contacts: the kernel
-    (``contact.compiled._crook_many``) with its tables prepared once, as the connector has
+    (``contact.kernels._crook_many``) with its tables prepared once, as the connector has
     them (``crook_fast`` would rebuild the tables on every call)."""
     tables = compiled.crook_tables(16)
-    c1_coef = LUB.temperature_viscosity / (8.0 * LUB.thermal_conductivity)
+    law = compiled.traction_record(LUB, lam)
     calls = [tuple(np.ascontiguousarray(v, dtype=float) for v in st) for st in calls]
     out = np.empty((4, calls[0][0].size))
 
     def run(st):
-        compiled._crook_many(*st, LUB.viscosity, LUB.pressure_viscosity, c1_coef, lam or 0.0, *tables, out)
+        crook._crook_many(*st, np.zeros(st[0].size), law, tables, out)
 
     for st in calls:
         run(st)

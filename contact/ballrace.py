@@ -14,8 +14,7 @@ import numpy as np
 from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
-from .rolling_resistance import (hydrodynamic_rolling_force, rolling_resistance_force, rolling_resistance_moment,
-                                 thermal_film_factor)
+from .terms import contact_terms, term_record
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS", "CROOK_MODELS"]
 
@@ -109,7 +108,7 @@ class ContactLaw:
         laws only.
     compiled : bool
         Evaluate the bearing's contacts with the numba-compiled kernels
-        (:mod:`contact.compiled`, the same equations without per-call numpy overhead, ~4x
+        (:mod:`contact.kernels`, the same equations without per-call numpy overhead, ~4x
         faster) where they cover the law: Crook (with or without the limiting shear) by the
         fast rule or no traction, Hertz fits. Otherwise, or with False, the numpy functions
         of this package.
@@ -160,6 +159,11 @@ class ContactLaw:
                 raise ValueError(f"{name} must be True or False, got {getattr(self, name)!r}")
         if self.film_elasticity not in (None, True, False):
             raise ValueError(f"film_elasticity must be True, False or None, got {self.film_elasticity!r}")
+
+    @property
+    def crook(self) -> bool:
+        """Whether the traction is a Crook law (:func:`contact.traction.crook_traction`)."""
+        return self.traction in CROOK_MODELS
 
     def limiting_shear_for(self, lubricant) -> float | None:
         """Lambda of the smooth limiting shear this law applies with ``lubricant``
@@ -253,22 +257,21 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         a, b = a[idx], b[idx]
         h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
                                           params.effective_modulus, lubricant)
-        phi_t = 1.0
-        if law.thermal_film:
-            phi_t = thermal_film_factor(kin.entrainment[idx], kin.slip_rolling[idx], p_max[idx],
-                                        params.effective_modulus, lubricant.viscosity,
-                                        lubricant.temperature_viscosity, lubricant.thermal_conductivity)
+        # the per-contact terms (contact.terms): thermal film factor, rolling resistance
+        terms = term_record(law, lubricant, params.ball_diameter)
+        phi_t, push, couple = 1.0, 0.0, 0.0
+        if any(terms):
+            r_y = geometry.curvature_radii(params.ball_diameter, params.pitch_diameter, kin.contact_angle,
+                                           params.conformity, params.race)[1]
+            rate = np.zeros(n_con) if kin.rolling_rate is None else kin.rolling_rate
+            phi_t, push, couple = contact_terms(
+                terms, load=load[idx], a=a, b=b, max_pressure=p_max[idx], r_x=r_x[idx],
+                r_y=np.broadcast_to(r_y, (n_con,))[idx], slip=kin.slip_rolling[idx],
+                entrainment=kin.entrainment[idx], rolling_rate=rate[idx], ball_radius=0.5 * params.ball_diameter,
+                e_prime=params.effective_modulus, viscosity=lubricant.viscosity)
         h[idx] = np.maximum(phi_t * h_c, law.min_film_thickness)
         if law.rolling_resistance:
-            r_y = np.broadcast_to(geometry.curvature_radii(params.ball_diameter, params.pitch_diameter,
-                                                           kin.contact_angle, params.conformity, params.race)[1],
-                                  (n_con,))
-            f_r = phi_t * hydrodynamic_rolling_force(load[idx], kin.entrainment[idx], r_x[idx], r_y[idx],
-                                                     a, b, params.effective_modulus, lubricant.viscosity,
-                                                     width=params.ball_diameter)
-            rolling[idx] = rolling_resistance_moment(f_r, r_x[idx], kin.rolling_rate[idx])
-            rolling_push[idx] = rolling_resistance_force(f_r, r_x[idx], 0.5 * params.ball_diameter,
-                                                         kin.rolling_rate[idx])
+            rolling[idx], rolling_push[idx] = couple, push
             # the couple's power and the force pair's at the contact point (u = race − ball)
             rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx] + rolling_push[idx] * kin.slip_rolling[idx]
         # spin still shapes the local slip field when its moment is switched off

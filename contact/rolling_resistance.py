@@ -1,14 +1,81 @@
-"""Hydrodynamic (EHL) rolling resistance of a ball–race contact and the thermal reduction of
-its film at speed (MODEL.md §11b, §11e; beyond the paper).
+"""Hydrodynamic (EHL) rolling resistance of a ball–race contact (MODEL.md §11b; beyond the paper).
 
-Both act per contact on arrays of contacts (SI units) and are switched on by
-:class:`contact.ballrace.ContactLaw` (``rolling_resistance``, ``thermal_film``).
+A per-contact term (:mod:`contact.terms`), written once as scalar numba functions that the
+compiled kernels call per contact and numpy calls as ufuncs (the array functions below);
+switched on by :class:`contact.ballrace.ContactLaw` (``rolling_resistance``).
 """
 from __future__ import annotations
 
-import numpy as np
+import math
 
-__all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment", "thermal_film_factor"]
+import numpy as np
+from numba import njit, vectorize
+
+__all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment",
+           "rolling_loads", "hydrodynamic_force"]
+
+#: slip speed u_reg (m/s) that smooths the sign of the rolling resistance through zero rolling
+ROLLING_REGULARIZATION = 1e-3
+
+
+@njit(cache=True, error_model="numpy")
+def hydrodynamic_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor):
+    """f of :func:`hydrodynamic_rolling_force` for one contact, N, times ``film_factor`` (the
+    thermal φ_T of MODEL.md §11e, 1: none); ``width`` <= 0: no truncation; 0 for an unloaded
+    contact or zero entrainment."""
+    u = abs(entrainment)
+    if not (load > 0.0 and u > 0.0 and a > 0.0):
+        return 0.0
+    kap = min(b / a, 1.0)
+    rxy = min(r_x / r_y, 1.0)
+    beta = (4.0 / math.pi) * (1.0003 + 0.5968 * rxy) / (1.0 + r_x / r_y)
+    big_u = 2.0 * viscosity * u / (e_prime * r_x)
+    moes = beta ** 0.25 * kap * (load / (e_prime * r_x * r_x)) / big_u ** 0.75
+    ehl = 1.8 * beta ** -0.25
+    ivr = 0.77 * beta ** (-1.0 / 3.0) * kap ** 0.12 * big_u ** (-1.0 / 12.0)
+    f_r = e_prime * r_x * (2.0 * a) * ((ivr - ehl) / (1.0 + moes / 6.6) + ehl) * big_u ** 0.75
+    if width <= 0.0:
+        return film_factor * f_r
+    c_t = 0.85 / (1.0 + 4.72 * moes ** -0.39 * kap ** (0.484 * moes ** 0.165))
+    span = min(2.0 * a / width, 1.0)
+    return film_factor * f_r / (1.0 + (1.0 / c_t - 1.0) * span ** ((2.0 - kap) * (0.0018 * moes + 1.33)))
+
+
+@njit(cache=True, error_model="numpy")
+def rolling_loads(force, r_x, ball_radius, rolling_rate):
+    """(couple about t2, N m; force along t1 at the contact point, N) of the rolling resistance
+    on the ball (MODEL.md §11b): -2 f R_x s and f (2 R_x / r_b - 1) s with the sense
+    s = tanh(R_x w_r / u_reg); the race takes the opposite of both.
+
+    ``rolling_rate`` w_r = (w_ball - w_race) . t2 (rad/s) is the relative rolling rotation, so
+    the couple dissipates 2 f R_x |w_r| = 2 f u_m in pure rolling (R_x |w_r| = u_m): Biboulet &
+    Houpert's power loss. The couple is the moment of the film's forces about the contact
+    point. The film shears each surface by f against its motion relative to the contact, and
+    its pressure, whose resultant lies 2 f R_x / Q upstream of the contact centre (Biboulet &
+    Houpert 2010, part 1, eqs. 32-37), pushes each body by 2 f R_x / R_body along it through
+    that body's centre (Balan, Houpert et al. 2015, Lubricants 3, 222: the pressure force
+    2 F_R through the ball centre); with the couple, the moment about the ball centre is
+    -f r_b."""
+    sense = math.tanh(r_x * rolling_rate / ROLLING_REGULARIZATION)
+    return -2.0 * force * r_x * sense, force * (2.0 * r_x / ball_radius - 1.0) * sense
+
+
+_SIG10 = "float64(" + ", ".join(["float64"] * 10) + ")"
+
+
+@vectorize([_SIG10], cache=True)
+def _hydrodynamic_ufunc(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor):
+    return hydrodynamic_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor)
+
+
+@vectorize(["float64(float64, float64, float64)"], cache=True)
+def _couple_ufunc(force, r_x, rolling_rate):
+    return rolling_loads(force, r_x, 1.0, rolling_rate)[0]
+
+
+@vectorize(["float64(float64, float64, float64, float64)"], cache=True)
+def _push_ufunc(force, r_x, ball_radius, rolling_rate):
+    return rolling_loads(force, r_x, ball_radius, rolling_rate)[1]
 
 
 def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width=None):
@@ -47,76 +114,18 @@ def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, visco
     width : float, optional
         𝓛 of the truncation factor, m (the ball diameter); None: no truncation.
     """
-    q = np.asarray(load, dtype=float)
-    u = np.abs(np.asarray(entrainment, dtype=float))
-    r_x, r_y = np.asarray(r_x, dtype=float), np.asarray(r_y, dtype=float)
-    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
-    on = (q > 0) & (u > 0) & (a > 0)
-    qs, us = np.where(on, q, 1.0), np.where(on, u, 1.0)
-    a_s, b_s = np.where(on, a, 1.0), np.where(on, b, 1.0)
-    kappa = np.minimum(b_s / a_s, 1.0)
-    ratio = r_x / r_y
-    beta = (4.0 / np.pi) * (1.0003 + 0.5968 * np.minimum(ratio, 1.0)) / (1.0 + ratio)
-    big_u = 2.0 * viscosity * us / (e_prime * r_x)
-    big_w = qs / (e_prime * r_x ** 2)
-    moes = beta ** 0.25 * kappa * big_w / big_u ** 0.75
-    ehl = 1.8 * beta ** -0.25
-    ivr = 0.77 * beta ** (-1.0 / 3.0) * kappa ** 0.12 * big_u ** (-1.0 / 12.0)
-    t_star = (2.0 * a_s / r_x) * ((ivr - ehl) / (1.0 + moes / 6.6) + ehl) * big_u ** 0.75
-    force = e_prime * r_x ** 2 * t_star
-    if width is not None:
-        c = 0.85 / (1.0 + 4.72 * moes ** -0.39 * kappa ** (0.484 * moes ** 0.165))
-        span = np.minimum(2.0 * a_s / width, 1.0)
-        force = force / (1.0 + (1.0 / c - 1.0) * span ** ((2.0 - kappa) * (0.0018 * moes + 1.33)))
-    return np.where(on, force, 0.0)
+    return _hydrodynamic_ufunc(load, entrainment, r_x, r_y, a, b, float(e_prime), viscosity,
+                               0.0 if width is None else float(width), 1.0)
 
 
-def rolling_resistance_moment(force, r_x, rolling_rate, regularization=1e-3):
-    """Couple of the rolling resistance on the ball about the transverse axis t2, N m (MODEL.md
-    §11b): -2 f R_x tanh(R_x w_r / u_reg), equal and opposite on the race.
-
-    ``rolling_rate`` w_r = (w_ball - w_race) . t2 (rad/s) is the relative rolling rotation, so
-    the couple dissipates 2 f R_x |w_r| = 2 f u_m in pure rolling (R_x |w_r| = u_m): Biboulet &
-    Houpert's power loss. It is the moment of the film's forces about the contact point; with
-    :func:`rolling_resistance_force` at that point the ball feels f r_b about its centre.
-    ``regularization`` u_reg (m/s) smooths the sign through zero rolling."""
-    r_x = np.asarray(r_x, dtype=float)
-    return -2.0 * np.asarray(force, dtype=float) * r_x * np.tanh(r_x * np.asarray(rolling_rate, dtype=float)
-                                                                   / regularization)
+def rolling_resistance_moment(force, r_x, rolling_rate):
+    """Couple of the rolling resistance on the ball about the transverse axis t2, N m
+    (:func:`rolling_loads`, MODEL.md §11b), on arrays; equal and opposite on the race."""
+    return _couple_ufunc(force, r_x, rolling_rate)
 
 
-def rolling_resistance_force(force, r_x, ball_radius, rolling_rate, regularization=1e-3):
+def rolling_resistance_force(force, r_x, ball_radius, rolling_rate):
     """Net tangential force of the rolling resistance on the ball at the contact point along
-    the rolling direction t1, N (MODEL.md §11b); the race takes the opposite force there.
-
-    The film shears each surface by f against its motion relative to the contact, and its
-    pressure, whose resultant lies 2 f R_x / Q upstream of the contact centre (Biboulet &
-    Houpert 2010, part 1, eqs. 32-37), pushes each body by 2 f R_x / R_body along it through
-    that body's centre (Balan, Houpert et al. 2015, Lubricants 3, 222: the pressure force
-    2 F_R through the ball centre). On the ball (R_body = r_b) the sum is
-    f (2 R_x / r_b - 1) along its surface's motion tanh(R_x w_r / u_reg) t1; with the couple of
-    :func:`rolling_resistance_moment` the moment about the ball centre is -f r_b."""
-    r_x = np.asarray(r_x, dtype=float)
-    return (np.asarray(force, dtype=float) * (2.0 * r_x / ball_radius - 1.0)
-            * np.tanh(r_x * np.asarray(rolling_rate, dtype=float) / regularization))
-
-
-def thermal_film_factor(entrainment, slip, max_pressure, e_prime, viscosity, temperature_viscosity,
-                        thermal_conductivity, floor=0.05):
-    """Inlet-shear-heating reduction of the isothermal film thickness, φ_T in (0, 1] (MODEL.md §11e).
-
-    Zhu & Cheng's fit as given by Zhou & Hoeprich (1991, ASME J. Tribol. 113, 590, eq. 21)
-    and Gupta et al. (1992, ASME J. Tribol. 114, 707):
-
-        φ_T = (1 - 13.2 (p_H/E') L^0.42) / (1 + 0.213 (1 + 2.23 S^0.83) L^0.64),
-        L = (-dη/dT) u_r² / K = η0 c_ηT u_r² / K,   S = |u_s| / u_r,
-
-    u_r the rolling (entrainment) speed, u_s the sliding speed along it. Clipped to
-    [``floor``, 1] (the fit's numerator turns negative far outside its data).
-    """
-    u_r = np.abs(np.asarray(entrainment, dtype=float))
-    loading = viscosity * temperature_viscosity * u_r ** 2 / thermal_conductivity
-    s = np.abs(np.asarray(slip, dtype=float)) / np.where(u_r > 0, u_r, 1.0)
-    phi = ((1.0 - 13.2 * (np.asarray(max_pressure, dtype=float) / e_prime) * loading ** 0.42)
-           / (1.0 + 0.213 * (1.0 + 2.23 * s ** 0.83) * loading ** 0.64))
-    return np.clip(np.where(u_r > 0, phi, 1.0), floor, 1.0)
+    the rolling direction t1, N (:func:`rolling_loads`, MODEL.md §11b), on arrays; the race
+    takes the opposite force there."""
+    return _push_ufunc(force, r_x, float(ball_radius), rolling_rate)

@@ -332,7 +332,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
     G *= E  # g h/η_T
     if elastic is not None:
         # Maxwell film in series (MODEL.md §6b): g/(1 + R), R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|)
-        # with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.compiled)
+        # with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.kernels.crook)
         kap, ent = elastic
         sgn = np.where(ent < 0, -1.0, 1.0)
         live = (ent != 0.0)

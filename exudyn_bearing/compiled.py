@@ -1,4 +1,4 @@
-"""The connector's compiled path: node states -> race frames -> :mod:`contact.compiled` ->
+"""The connector's compiled path: node states -> race frames -> :mod:`contact.kernels` ->
 generalized forces per node slot, for a batch of B states (the Jacobian) or, in one
 compiled call from Exudyn's coordinates to the force vector, for one state (the residual,
 ~7 times per step: the numpy glue between the kernels cost more than the kernels).
@@ -12,15 +12,17 @@ from __future__ import annotations
 import math
 import threading
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
-from contact import compiled as kernels
+from contact import kernels
 from contact.kernel_cache import drop_stale
+from contact.terms import TermRecord, term_record
 
 # the one-state kernel below calls the contact/ kernels: recompile it when they changed
-drop_stale(__file__, [__file__, *Path(kernels.__file__).parent.glob("*.py")])
+drop_stale(__file__, [__file__, *kernels.SOURCES])
 _ANNOUNCED = []
 
 
@@ -31,8 +33,9 @@ def _announce_compilation():
     if _ANNOUNCED:
         return
     _ANNOUNCED.append(True)
-    cached = [d for d in (Path(__file__).parent / "__pycache__", Path(kernels.__file__).parent / "__pycache__")
-              if any(d.glob("compiled.*.nbi"))]
+    cached = [d for d, stem in ((Path(__file__).parent / "__pycache__", "compiled"),
+                                (Path(kernels.__file__).parent / "__pycache__", "race"))
+              if any(d.glob(f"{stem}.*.nbi"))]
     if len(cached) < 2:
         print("exudyn-bearing: compiling the contact kernels (once, about 20-60 s; cached afterwards)",
               file=sys.stderr, flush=True)
@@ -50,10 +53,13 @@ def supports(law) -> bool:
 
 
 @njit(cache=True, error_model="numpy")
-def _race_frames(pos, rot, vel, omega, slots, local_pos, local_rot, fixed_origin, fixed_rot, fixed_omega,
-                 ro, rr, rv, rw):
+def _race_frames(pos, rot, vel, omega, mount, fixed_omega, frames):
     """Origin, rotation, origin velocity and angular velocity of the inner and outer race
-    frames (B, 2, ...): on their node (slot >= 0) or kinematic (fixed frame, given omega)."""
+    frames (B, 2, ...) into ``frames`` (:class:`~contact.kernels.records.RaceFrames`): on their
+    node (slot >= 0 in the :class:`Mount`) or kinematic (fixed frame, given ``fixed_omega``)."""
+    slots, local_pos, local_rot = mount.slots, mount.local_pos, mount.local_rot
+    fixed_origin, fixed_rot = mount.fixed_origin, mount.fixed_rot
+    ro, rr, rv, rw = frames.origin, frames.rotation, frames.velocity, frames.omega
     for ib in range(pos.shape[0]):
         for k in range(2):
             s = slots[k]
@@ -91,12 +97,13 @@ def _add_reaction(react, ib, j, s, rot, lever, f, m, sign):
 
 
 @njit(cache=True, error_model="numpy")
-def _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force, out, react,
-              friction, point, has_friction):
+def _assemble(mount, c, pos, rot, force, moment, ball_loads, out, react):
     """Per-slot forces without the ball-caused race/cage parts (out, B x n x 6) and each
-    ball's contributions to the race and cage slots (react, B x Z x n x 6); with
-    ``has_friction`` also the pocket friction (``friction`` on the balls at ``point``,
-    B x Z x 3, MODEL.md §11d)."""
+    ball's contributions to the race and cage slots (react, B x Z x n x 6) from the ball–race
+    contacts (``force``, ``moment``) and ``ball_loads`` = (cage force, drag force, pocket
+    friction on the balls, its point, whether there is pocket friction; MODEL.md §11d)."""
+    balls, slots, cage_slot = mount.balls, mount.slots, mount.cage_slot
+    cage_force, drag_force, friction, point, has_friction = ball_loads
     out[:] = 0.0
     react[:] = 0.0
     no_moment = np.zeros(3)
@@ -139,24 +146,63 @@ HELD_NONE, HELD_ROTATION, HELD_ALL = 0, 1, 2
 OK, NON_FINITE, TOO_DEEP = 0, 1, 2
 
 
+class Mount(NamedTuple):
+    """Where a connector's bodies sit among its nodes (per-slot arrays: slot = node index)."""
+
+    balls: np.ndarray  #: (Z,) slot of each ball, int64
+    slots: np.ndarray  #: (2,) slot of the inner and outer race, -1: kinematic race
+    cage_slot: int  #: slot of the rigid cage, -1: none
+    local_pos: np.ndarray  #: (2, 3) race frame origin in its node's frame, m
+    local_rot: np.ndarray  #: (2, 3, 3) race frame rotation in its node's frame
+    fixed_origin: np.ndarray  #: (3,) origin of the kinematic races' frame, m
+    fixed_rot: np.ndarray  #: (3, 3) its rotation
+    held: np.ndarray  #: (n,) per slot HELD_NONE, HELD_ROTATION or HELD_ALL
+
+
+class Guide(NamedTuple):
+    """The guiding land of a race-guided cage (MODEL.md §1, §11d)."""
+
+    race: int  #: 0 inner, 1 outer, -1 none
+    play: float  #: radial play, m
+    stiffness: float  #: N/m
+    damping: float  #: N s/m
+    friction: float  #: friction torque per unit slip speed of the land, N m s
+
+
+class Physics(NamedTuple):
+    """Everything :func:`_one_state` computes with that does not change in time."""
+
+    geometry: kernels.RaceGeometry
+    law: kernels.LawRecord
+    tables: kernels.CrookTables
+    terms: TermRecord
+    cage: kernels.CageRecord
+    pocket: tuple  #: (friction coefficient, slip scale m/s) of the ball–pocket friction (§11d); μ 0: none
+    guide: Guide
+
+
 @njit(cache=True, error_model="numpy")
-def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot, fixed_origin, fixed_rot, fixed_omega,
-               groove, conformity, sign, ball_radius, pitch_diameter, e_prime, ball_mass, damping_ratio, traction,
-               spin_moment, min_film, eta0, c_p, max_barus, c1_coef, cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64,
-               w64, cage_kind, pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping, axis, origin,
-               drag_factor, guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, applied, held,
-               driven,
-               max_penetration, out, penetration, load, lam_s, kap_e, rr_width, th_k, pocket_mu, pocket_slip):
+def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, penetration, load):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
-    guiding land (``guide_race`` 0 inner, 1 outer, -1 none), ``applied`` force (N) on the
-    inner race slot, ``held`` components (per slot: HELD_*) dropped, and per ``driven`` row
-    (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven race's axial
-    torque I (dw_ref/dt + (w_ref - w)/tau). Returns OK, NON_FINITE (state not finite;
-    nothing computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m).
+    guiding land, ``inputs`` = (angular velocities of the kinematic races (2, 3) rad/s,
+    ``applied`` force (N) on the inner race slot, ``driven`` rows), ``held`` components of
+    the ``mount`` dropped, and per ``driven`` row (slot, I_axial kg m², dw_ref/dt rad/s²,
+    w_ref rad/s, 1/tau 1/s) the driven race's axial torque I (dw_ref/dt + (w_ref - w)/tau).
+    ``mount`` and ``physics`` are :class:`Mount` and :class:`Physics` as plain tuples (see
+    :mod:`contact.kernels.records`). Returns OK, NON_FINITE (state not finite; nothing
+    computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m).
     Serial: calling the parallel contact kernel from here (2 threads: case (a) 143 -> 83 us
     a call) made Dask worker processes crash once this module was recompiled against a cached
     contact module (DEVELOPMENT.md §18)."""
+    mount = Mount(*mount)
+    balls, slots, cage_slot, held = mount.balls, mount.slots, mount.cage_slot, mount.held
+    geometry, law, tables, terms, cage, pocket, guide = physics
+    geometry, law, tables = kernels.RaceGeometry(*geometry), kernels.LawRecord(*law), kernels.CrookTables(*tables)
+    terms, cage = TermRecord(*terms), kernels.CageRecord(*cage)
+    pocket_mu, pocket_slip = pocket
+    guide_race, guide_play, guide_stiffness, guide_damping, guide_friction = guide
+    fixed_omega, applied, driven = inputs
     n = reference.shape[0] // 6
     z = balls.shape[0]
     pos = np.empty((1, n, 3))
@@ -179,8 +225,7 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
                 return NON_FINITE
     ro, rr = np.empty((1, 2, 3)), np.empty((1, 2, 3, 3))
     rv, rw = np.empty((1, 2, 3)), np.empty((1, 2, 3))
-    _race_frames(pos, rot, vel, omega, slots, local_pos, local_rot, fixed_origin, fixed_rot, fixed_omega,
-                 ro, rr, rv, rw)
+    _race_frames(pos, rot, vel, omega, mount, fixed_omega, kernels.RaceFrames(ro, rr, rv, rw))
     c, v, w = np.empty((1, z, 3)), np.empty((1, z, 3)), np.empty((1, z, 3))
     for j in range(z):
         for i in range(3):
@@ -188,25 +233,22 @@ def _one_state(q, q_t, reference, balls, slots, cage_slot, local_pos, local_rot,
             v[0, j, i] = vel[0, balls[j], i]
             w[0, j, i] = omega[0, balls[j], i]
     force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
-    pen3 = penetration.reshape(1, 2, z)
-    kernels.race_contacts(c, v, w, ro, rr, rv, rw, groove, conformity, sign, ball_radius, pitch_diameter, e_prime,
-                          ball_mass, damping_ratio, traction, spin_moment, min_film, eta0, c_p, max_barus, c1_coef,
-                          cos_tab, sin_tab, wpsi_tab, rho32, w32, rho64, w64, force, moment, pen3,
-                          load.reshape(1, 2, z), lam_s, kap_e, rr_width, th_k)
+    balls_now = kernels.BallStates(c, v, w)
+    kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, law, tables, terms,
+                          kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z)))
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
-    kernels.cage_and_drag(c, v, cage_kind, pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(),
-                          omega[:, cs].copy(), pocket_angles, pitch_radius, clearance, cage_stiffness, cage_damping,
-                          axis, origin, drag_factor, cage_force, drag_force)
+    cage_now = kernels.BodyStates(pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy())
+    kernels.cage_and_drag(c, v, cage, cage_now, cage_force, drag_force)
     friction, point = np.empty((1, z, 3)), np.empty((1, z, 3))
-    has_friction = pocket_mu > 0.0 and cage_kind == 1
+    has_friction = pocket_mu > 0.0 and cage.kind == 1
     if has_friction:
-        kernels.pocket_friction(cage_force, c, v, w, pos[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy(),
-                                ball_radius, pocket_mu, pocket_slip, friction, point)
+        kernels.pocket_friction(cage_force, balls_now, cage_now, geometry.ball_radius, pocket_mu, pocket_slip,
+                                friction, point)
     o6 = out.reshape(n, 6)
     react = np.empty((1, z, n, 6))
-    _assemble(balls, slots, cage_slot, c, pos, rot, force, moment, cage_force, drag_force,
-              o6.reshape(1, n, 6), react, friction, point, has_friction)
+    _assemble(mount, c, pos, rot, force, moment, (cage_force, drag_force, friction, point, has_friction),
+              o6.reshape(1, n, 6), react)
     for j in range(z):
         for s in range(n):
             for i in range(6):
@@ -452,44 +494,41 @@ class CompiledForces:
         for k, name in enumerate(("inner", "outer")):
             if name in con.race_frames:
                 self.local_pos[k], self.local_rot[k] = con.race_frames[name]
-        self.groove = np.array([con.grooves["inner"], con.grooves["outer"]], dtype=float)
-        self.conformity = np.array([b.inner_conformity, b.outer_conformity])
-        self.sign = np.array([-1.0, 1.0])
-        self.tables = kernels.crook_tables(law.quadrature_order)
-        self.physics = (b.ball_radius, b.pitch_diameter, b.effective_modulus, b.ball_mass, law.damping_ratio,
-                        1 if law.traction in CROOK_MODELS else 0, law.spin_moment, law.min_film_thickness,
-                        lub.viscosity, lub.pressure_viscosity, law.max_barus_exponent,
-                        lub.temperature_viscosity / (8.0 * lub.thermal_conductivity))
-        self.lam_s = float(law.limiting_shear_for(lub) or 0.0)  # Λ of MODEL.md §6a, 0: none
-        self.kap_e = float(law.film_modulus_for(lub) or 0.0)  # κ of MODEL.md §6b, 0: none
-        crook = law.traction in CROOK_MODELS
-        # MODEL.md §11b (truncation width: the ball diameter) and §11e; 0: off
-        self.rr_width = float(b.ball_diameter) if (crook and law.rolling_resistance) else 0.0
-        self.th_k = float(lub.temperature_viscosity / lub.thermal_conductivity) if (crook and law.thermal_film) else 0.0
-        self.cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
-        self.cage_slot = con.layout["cage"] if self.cage_kind == 1 else -1
-        # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
-        self.pocket = (float(con.cage.pocket_friction) if self.cage_kind == 1 else 0.0,
-                       float(con.cage.pocket_slip_scale))
+        geometry = kernels.RaceGeometry(np.array([con.grooves["inner"], con.grooves["outer"]], dtype=float),
+                                        np.array([b.inner_conformity, b.outer_conformity]), np.array([-1.0, 1.0]),
+                                        float(b.ball_radius), float(b.pitch_diameter), float(b.effective_modulus),
+                                        float(b.ball_mass))
+        cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
+        self.cage_kind = cage_kind
+        self.cage_slot = con.layout["cage"] if cage_kind == 1 else -1
         drag = con.drag
-        self.drag_factor = 0.0
+        drag_factor = 0.0
         if drag is not None and drag.drag_coefficient * drag.oil_volume_fraction > 0:
-            self.drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * lub.density * np.pi
-                                * b.ball_radius ** 2)
+            drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * lub.density * np.pi
+                           * b.ball_radius ** 2)
+        cage = kernels.CageRecord(cage_kind, con.pocket_angles, float(b.pitch_radius), float(con.cage.clearance),
+                                  float(con.cage.stiffness), float(con.cage_damping), con.axis, con.origin,
+                                  float(drag_factor))
+        # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
+        pocket = (float(con.cage.pocket_friction) if cage_kind == 1 else 0.0, float(con.cage.pocket_slip_scale))
+        guide = Guide(-1, 0.0, 0.0, 0.0, 0.0)
+        if con.guide is not None:
+            guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
+        self.physics = Physics(geometry, kernels.law_record(law, lub), kernels.crook_tables(law.quadrature_order),
+                               term_record(law, lub, b.ball_diameter), cage, pocket, guide)
+        held = np.zeros(con.n_nodes, dtype=np.int64)
+        for slot, what in con.held.items():
+            held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
+        self.mount = Mount(self.balls, self.slots, int(self.cage_slot), self.local_pos, self.local_rot,
+                           np.ascontiguousarray(con.origin, dtype=float), np.ascontiguousarray(con.rotation, dtype=float),
+                           held)
+        # plain tuples for the one-state kernel: numba types them in its C fast path
+        self._mount_tuple = tuple(self.mount)
+        self._physics_tuple = tuple(tuple(x) if isinstance(x, tuple) else x for x in self.physics)
         self._work = {}
         self._patterns = {}
         # ((t, force function), race speeds, applied force, driven rows) of the last call
         self._time_inputs = ((math.nan, None),)
-        # the single-state path (:meth:`single`)
-        self.held = np.zeros(con.n_nodes, dtype=np.int64)
-        for slot, what in con.held.items():
-            self.held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
-        self.guide_race, self.guide = -1, (0.0, 0.0, 0.0, 0.0)
-        if con.guide is not None:
-            self.guide_race = ("inner", "outer").index(con.guide[0])
-            self.guide = tuple(float(x) for x in con.guide[1:])
-        self.cage_args = (self.cage_kind, con.pocket_angles, b.pitch_radius, con.cage.clearance, con.cage.stiffness,
-                          con.cage_damping, con.axis, con.origin, self.drag_factor)
         self.kinematic = [(i, con.races[k]) for i, k in enumerate(("inner", "outer")) if self.slots[i] < 0]
         self.no_driven = np.zeros((0, 5))
         self.out = np.empty(6 * con.n_nodes)
@@ -527,12 +566,9 @@ class CompiledForces:
             self._time_inputs = ((t, con.applied_force), self.fixed_omega(t),
                                  np.asarray(con.applied_force(t), dtype=float), driven)
         _, fixed_omega, applied, driven = self._time_inputs
-        status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self.balls,
-                            self.slots, self.cage_slot, self.local_pos, self.local_rot, con.origin, con.rotation,
-                            fixed_omega, self.groove, self.conformity, self.sign, *self.physics, *self.tables,
-                            *self.cage_args, self.guide_race, *self.guide, applied, self.held, driven,
-                            con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
-                            self.lam_s, self.kap_e, self.rr_width, self.th_k, *self.pocket)
+        status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self._mount_tuple,
+                            self._physics_tuple, (fixed_omega, applied, driven),
+                            con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load)
         return status, self.out
 
     def _arrays(self, bsz):
@@ -564,20 +600,20 @@ class CompiledForces:
         fixed_omega = self.fixed_omega(t)
         pos, rot = np.ascontiguousarray(pos), np.ascontiguousarray(rot)
         vel, omega = np.ascontiguousarray(vel), np.ascontiguousarray(omega)
-        _race_frames(pos, rot, vel, omega, self.slots, self.local_pos, self.local_rot, con.origin, con.rotation,
-                     fixed_omega, w["ro"], w["rr"], w["rv"], w["rw"])
+        frames = kernels.RaceFrames(w["ro"], w["rr"], w["rv"], w["rw"])
+        _race_frames(pos, rot, vel, omega, self.mount, fixed_omega, frames)
         # C-ordered copies: numba compiles one machine code per memory layout
-        c, v, wb = (np.take(x, self.balls, axis=1) for x in (pos, vel, omega))
-        args = (c, v, wb, w["ro"], w["rr"], w["rv"], w["rw"], self.groove, self.conformity, self.sign,
-                *self.physics, *self.tables, w["force"], w["moment"], w["penetration"], w["load"], self.lam_s,
-                self.kap_e, self.rr_width, self.th_k)
+        balls = kernels.BallStates(*(np.take(x, self.balls, axis=1) for x in (pos, vel, omega)))
+        ph = self.physics
+        args = (balls, frames, ph.geometry, ph.law, ph.tables, ph.terms,
+                kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
         # OpenMP is missing, serves one caller at a time)
         if bsz == 1 or threading.current_thread() is not threading.main_thread():
             kernels.race_contacts(*args)
             return w
-        todo, b, k = self._reuse_pattern(bsz, c.shape[1], same_contacts)
+        todo, b, k = self._reuse_pattern(bsz, self.balls.shape[0], same_contacts)
         kernels.race_contacts_parallel(*args, todo)
         if b.size:
             for key in ("force", "moment", "penetration", "load"):
@@ -603,17 +639,16 @@ class CompiledForces:
         bsz = pos.shape[0]
         c, v = (np.take(x, self.balls, axis=1) for x in (pos, vel))
         s = con.layout["cage"] if self.cage_kind == 1 else 0  # (any slot when there is no cage body)
-        cage = [np.ascontiguousarray(x[:, s]) for x in (pos, rot, vel, omega)]
-        kernels.cage_and_drag(c, v, self.cage_kind, *cage, con.pocket_angles,
-                              con.bearing.pitch_radius, con.cage.clearance, con.cage.stiffness, con.cage_damping,
-                              con.axis, con.origin, self.drag_factor, w["cage"], w["drag"])
-        has_friction = self.pocket[0] > 0.0
-        if has_friction:
-            kernels.pocket_friction(w["cage"], c, v, np.take(omega, self.balls, axis=1), cage[0], cage[2], cage[3],
-                                    con.bearing.ball_radius, *self.pocket, w["friction"], w["point"])
+        cage = kernels.BodyStates(*(np.ascontiguousarray(x[:, s]) for x in (pos, rot, vel, omega)))
+        kernels.cage_and_drag(c, v, self.physics.cage, cage, w["cage"], w["drag"])
+        mu, slip_scale = self.physics.pocket
+        if mu > 0.0:
+            balls = kernels.BallStates(c, v, np.take(omega, self.balls, axis=1))
+            kernels.pocket_friction(w["cage"], balls, cage, con.bearing.ball_radius, mu, slip_scale, w["friction"],
+                                    w["point"])
         n = con.n_nodes
         out = np.empty((bsz, n, 6))
         react = np.empty((bsz, self.balls.shape[0], n, 6))
-        _assemble(self.balls, self.slots, self.cage_slot, c, pos, rot, w["force"], w["moment"], w["cage"], w["drag"],
-                  out, react, w["friction"], w["point"], has_friction)
+        _assemble(self.mount, c, pos, rot, w["force"], w["moment"],
+                  (w["cage"], w["drag"], w["friction"], w["point"], mu > 0.0), out, react)
         return out, react, w["penetration"], w["load"]

@@ -377,7 +377,7 @@ class BearingConnector:
         """Adds the ball–pocket friction under the pocket forces ``normal`` (B, Z, 3) (MODEL.md
         §11d, :func:`contact.cage.pocket_friction`) to the balls' slots and its reaction (at the
         contact points) to the cage's per-ball parts of ``react``, in place (the numpy path; the
-        compiled one in :func:`contact.compiled.pocket_friction`); returns (force on the balls
+        compiled one in :func:`contact.kernels.pocket_friction`); returns (force on the balls
         (B, Z, 3) N, loss (B, Z) W)."""
         s, balls = self.layout["cage"], self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]

@@ -11,6 +11,7 @@ import pytest
 
 from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ball_race_kinematics
+from contact.terms import term_record
 from contact.traction import crook_traction
 from exudyn_bearing import REFERENCE_BEARING as B
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB
@@ -194,11 +195,11 @@ def test_barus_cap_numpy_path(exponent):
 
 @pytest.mark.parametrize("exponent", [60.0, 40.0])
 def test_barus_cap_compiled_kernel(exponent):
-    """contact.compiled.race_contacts on the same states: the traction read back from the
+    """contact.kernels.race_contacts on the same states: the traction read back from the
     force (F . t1, F . t2) and the moment (M . n) matches the capped reference within the
     fast rule's float32 agreement with the numpy rule (3e-4 of the force scale), far from
     the uncapped value."""
-    compiled = pytest.importorskip("contact.compiled")
+    compiled = pytest.importorskip("contact.kernels")
     law = ContactLaw(traction="crook", max_barus_exponent=exponent)
     cap = exponent / LUB.pressure_viscosity
     c, v, w = _inner_contacts(APPROACHES)
@@ -211,13 +212,13 @@ def test_barus_cap_compiled_kernel(exponent):
     rr = np.repeat(np.eye(3)[None, None], 2, axis=1).copy()
     force, moment = np.zeros((1, 2, z, 3)), np.zeros((1, 2, z, 3))
     penetration, load = np.zeros((1, 2, z)), np.zeros((1, 2, z))
-    compiled.race_contacts(c[None], v[None], w[None], ro, rr, rv, rw,
-                           np.array([[R_I, Z_I, TUBE_I], [R_O, Z_O, TUBE_O]]),
-                           np.array([B.inner_conformity, B.outer_conformity]), np.array([-1.0, 1.0]), B.ball_radius,
-                           B.pitch_diameter, B.effective_modulus, B.ball_mass, law.damping_ratio, 1, True,
-                           law.min_film_thickness, LUB.viscosity, LUB.pressure_viscosity, law.max_barus_exponent,
-                           LUB.temperature_viscosity / (8.0 * LUB.thermal_conductivity),
-                           *compiled.crook_tables(law.quadrature_order), force, moment, penetration, load)
+    geometry = compiled.RaceGeometry(np.array([[R_I, Z_I, TUBE_I], [R_O, Z_O, TUBE_O]]),
+                                     np.array([B.inner_conformity, B.outer_conformity]), np.array([-1.0, 1.0]),
+                                     B.ball_radius, B.pitch_diameter, B.effective_modulus, B.ball_mass)
+    compiled.race_contacts(compiled.BallStates(c[None], v[None], w[None]), compiled.RaceFrames(ro, rr, rv, rw),
+                           geometry, compiled.law_record(law, LUB), compiled.crook_tables(law.quadrature_order),
+                           term_record(law, LUB, B.ball_diameter),
+                           compiled.ContactOutputs(force, moment, penetration, load))
     np.testing.assert_allclose(load[0, 0], forces.normal_load, rtol=1e-12)
     assert np.all(load[0, 1] == 0.0)  # clear of the outer race
     f_in, m_in = force[0, 0], moment[0, 0]

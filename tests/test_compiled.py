@@ -1,4 +1,4 @@
-"""The compiled contact kernels (contact/compiled.py, exudyn_bearing/compiled.py) against
+"""The compiled contact kernels (contact/kernels/, exudyn_bearing/compiled.py) against
 the numpy functions of contact/ on the same states.
 
 The numpy path is the reference: the traction is checked against the ACCURATE quadrature
@@ -16,7 +16,8 @@ import pytest
 exu = pytest.importorskip("exudyn")
 pytest.importorskip("numba")
 
-from contact import compiled  # noqa: E402
+from contact import kernels as compiled  # noqa: E402
+from contact.kernels import float32  # noqa: E402
 from contact.ballrace import ContactLaw  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
@@ -78,13 +79,13 @@ def test_float32_exp_and_log_are_float32_accurate():
     float32 ulps over the ranges they serve (e^x for 0 <= x <= 88, inf beyond; ln x for
     x >= 1 up to float32's largest numbers)."""
     x = np.concatenate([np.linspace(0.0, 88.0, 4001), [1e-7, 0.5 * np.log(2.0)]]).astype(np.float32)
-    got = np.array([compiled._exp32(v) for v in x], dtype=np.float64)
+    got = np.array([float32.exp32(v) for v in x], dtype=np.float64)
     ref = np.exp(x.astype(np.float64))
     assert np.max(np.abs(got - ref) / ref) < 2 * 2.0 ** -23
-    assert compiled._exp32(np.float32(89.0)) == np.inf
+    assert float32.exp32(np.float32(89.0)) == np.inf
     y = np.concatenate([1.0 + np.logspace(-7, 0, 2000), np.logspace(0, 38, 2000), [1.0, np.sqrt(2.0)]])
     y = y.astype(np.float32)
-    got = np.array([compiled._log32(v) for v in y], dtype=np.float64)
+    got = np.array([float32.log32(v) for v in y], dtype=np.float64)
     ref = np.log(y.astype(np.float64))
     assert np.max(np.abs(got - ref) / np.maximum(ref, 2.0 ** -23)) < 2 * 2.0 ** -23
 

@@ -69,7 +69,7 @@ def test_series_limits():
 # ---------------------------------------------------------------------------------------
 import dataclasses  # noqa: E402
 
-from contact import compiled  # noqa: E402
+from contact import kernels as compiled  # noqa: E402
 from contact.ballrace import ContactLaw  # noqa: E402
 from contact.lubricant import REFERENCE_LUBRICANT as REF  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402

@@ -216,7 +216,7 @@ def test_rules_match_a_brute_force_integral_of_the_capped_stress(brute_force, ru
 
 
 def test_compiled_kernel_matches_the_brute_force_integral(brute_force):
-    compiled = pytest.importorskip("contact.compiled")
+    compiled = pytest.importorskip("contact.kernels")
     for (u, geo), ref in zip(BRUTE_CASES, brute_force):
         got = compiled.crook_fast(*([v] for v in u + geo), REF, limiting_shear=LAM)
         assert _rel_error(got[:3, 0], ref, *geo[:2]) < TOLERANCE["fast", 16]
@@ -244,7 +244,7 @@ def test_jacobian_with_the_cap_matches_finite_differences():
 # (e) compiled = numpy with the cap
 # ---------------------------------------------------------------------------------------
 def test_compiled_kernel_is_the_numpy_fast_rule_with_the_cap():
-    compiled = pytest.importorskip("contact.compiled")
+    compiled = pytest.importorskip("contact.kernels")
     ux, uy, om, a, b, pm, h = _contacts(200, seed=4)
     got = compiled.crook_fast(ux, uy, om, a, b, pm, h, REF, limiting_shear=LAM)
     ref = crook_traction(ux, uy, om, a, b, pm, h, REF, fast=True, limiting_shear=LAM)
@@ -262,16 +262,16 @@ def test_compiled_kernel_is_the_numpy_fast_rule_with_the_cap():
 
 
 def test_compiled_rational_tanh_is_accurate():
-    """The kernel's tanh (x P(x²)/Q(x²) up to _CAP_X, tanh(_CAP_X) beyond) against numpy:
+    """The kernel's tanh (x P(x²)/Q(x²) up to CAP_X, tanh(CAP_X) beyond) against numpy:
     relative error below 3e-6, and exactly Crook's law as x -> 0."""
-    compiled = pytest.importorskip("contact.compiled")
+    compiled = pytest.importorskip("contact.kernels.float32")
     x = np.concatenate([[0.0, 1e-30], np.logspace(-8, 3, 3000)])
-    xc = np.minimum(x, compiled._CAP_X)
-    th = xc * np.polyval(compiled._CAP_P[::-1], xc * xc) / np.polyval(compiled._CAP_Q[::-1], xc * xc)
+    xc = np.minimum(x, compiled.CAP_X)
+    th = xc * np.polyval(compiled.CAP_P[::-1], xc * xc) / np.polyval(compiled.CAP_Q[::-1], xc * xc)
     assert np.max(np.abs(th[1:] / np.tanh(x[1:]) - 1.0)) < 3e-6
-    assert compiled._CAP_P[0] == compiled._CAP_Q[0] == 1.0 and th[0] == 0.0
+    assert compiled.CAP_P[0] == compiled.CAP_Q[0] == 1.0 and th[0] == 0.0
     # tanh(x)/x = 1 − x²/3 + …: the fit's x² term is within 2e-6 of −1/3
-    assert compiled._CAP_P[1] - compiled._CAP_Q[1] == pytest.approx(-1.0 / 3.0, abs=2e-6)
+    assert compiled.CAP_P[1] - compiled.CAP_Q[1] == pytest.approx(-1.0 / 3.0, abs=2e-6)
 
 
 def test_the_default_law_runs_compiled_and_matches_the_numpy_path():

@@ -44,7 +44,7 @@ def test_damping_acts_on_the_relative_circumferential_speed():
 
 
 def test_compiled_pocket_forces_match():
-    kernels = pytest.importorskip("contact.compiled")
+    kernels = pytest.importorskip("contact.kernels")
     psi, c, v, w = _co_rotating(s=3e-8)
     rng = np.random.default_rng(3)
     v = v + 1e-3 * rng.standard_normal(v.shape)
@@ -52,8 +52,9 @@ def test_compiled_pocket_forces_match():
     rot = np.eye(3)[None]
     expected = pocket_forces(c[None], v[None], cage_o, rot, cage_v, w[None], psi, PITCH, 0.0, STIFFNESS, DAMPING)
     cage_force, drag_force = np.zeros((1, psi.size, 3)), np.zeros((1, psi.size, 3))
-    kernels.cage_and_drag(c[None], v[None], 1, cage_o, rot, cage_v, w[None], psi, PITCH, 0.0, STIFFNESS, DAMPING,
-                          np.array([0.0, 0.0, 1.0]), np.zeros(3), 0.0, cage_force, drag_force)
+    params = kernels.CageRecord(1, psi, PITCH, 0.0, STIFFNESS, DAMPING, np.array([0.0, 0.0, 1.0]), np.zeros(3), 0.0)
+    kernels.cage_and_drag(c[None], v[None], params, kernels.BodyStates(cage_o, rot, cage_v, w[None]), cage_force,
+                          drag_force)
     np.testing.assert_allclose(cage_force, expected, rtol=1e-9, atol=1e-12)
 
 
@@ -75,7 +76,7 @@ def test_land_force_starts_from_zero_at_any_approach_speed():
     assert -(k * 0.1 * LAND_DAMPING_DEPTH + c * 0.2) < small < -k * 0.1 * LAND_DAMPING_DEPTH
     # leaving the land fast, the damping never makes it pull
     assert force(2 * LAND_DAMPING_DEPTH, -50 * v) == 0.0
-    kernels = pytest.importorskip("contact.compiled")
+    kernels = pytest.importorskip("contact.kernels")
     for pen in (1e-12, 0.1 * LAND_DAMPING_DEPTH, 0.7 * LAND_DAMPING_DEPTH, 2 * LAND_DAMPING_DEPTH):
         out, ecc = np.zeros((1, 3)), np.zeros(1)
         kernels.land_forces(np.array([[play + pen, 0.0, 0.0]]), v[None], race[None], race[None], axis[None], play, k, c,

@@ -5,7 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from contact.rolling_resistance import hydrodynamic_rolling_force, rolling_resistance_moment, thermal_film_factor
+from contact.rolling_resistance import hydrodynamic_rolling_force, rolling_resistance_moment
+from contact.thermal_film import thermal_film_factor
 
 E_PRIME = 2.26e11  # steel on steel, Pa
 R_X, R_Y = 5.0e-3, 0.2  # a wide ellipse (R_y/R_x = 40)

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from contact import compiled as kernels
+from contact import kernels
 from contact.cage import spring_chain_forces
 
 Z, R_P, K = 16, 0.0775, 1e8
@@ -20,8 +20,9 @@ def _balls(psi, radius, z):
 def _compiled(c):
     force, drag = np.empty((1, Z, 3)), np.empty((1, Z, 3))
     zeros = np.zeros((1, 3))
-    kernels.cage_and_drag(c[None], np.zeros((1, Z, 3)), 2, zeros, np.eye(3)[None], zeros, zeros,
-                          2 * np.pi * np.arange(Z) / Z, R_P, 0.0, K, 0.0, AXIS, ORIGIN, 0.0, force, drag)
+    params = kernels.CageRecord(2, 2 * np.pi * np.arange(Z) / Z, R_P, 0.0, K, 0.0, AXIS, ORIGIN, 0.0)
+    kernels.cage_and_drag(c[None], np.zeros((1, Z, 3)), params, kernels.BodyStates(zeros, np.eye(3)[None], zeros, zeros),
+                          force, drag)
     return force[0]
 
 

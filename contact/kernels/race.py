@@ -1,0 +1,213 @@
+"""Ball–race contacts of a whole bearing, compiled, for B states at once (MODEL.md §2–§6).
+
+:func:`race_contacts` computes, contact by contact, what the numpy path computes on arrays:
+kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), Hertz fits (§3,
+:func:`contact.hertz.hertz_contact` with ``method='fit'``), the damped normal load, the
+Hamrock–Dowson film (§5, P17), the Crook traction by the fast rule
+(:func:`contact.kernels.crook.crook_one`) and the per-contact terms of :mod:`contact.terms`;
+force and moment on the ball as :func:`contact.ballrace.ball_race_forces`.
+:func:`race_contacts_parallel` spreads the contacts over numba's threads.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from ..terms import ContactState, contact_loads, film_factor
+from .crook import crook_one
+
+__all__ = ["race_contacts", "race_contacts_parallel", "rotation_matrices"]
+
+
+@njit(cache=True, error_model="numpy")
+def rotation_matrices(nu):
+    """Rodrigues rotation matrices of rotation vectors (n, 3) -> (n, 3, 3), as
+    :func:`contact.kinematics.rotation_matrices`."""
+    n = nu.shape[0]
+    out = np.empty((n, 3, 3))
+    for i in range(n):
+        x, y, z = nu[i, 0], nu[i, 1], nu[i, 2]
+        angle2 = x * x + y * y + z * z
+        if angle2 < 1e-12:
+            c1 = 1.0 - angle2 / 6.0
+            c2 = 0.5 - angle2 / 24.0
+        else:
+            angle = math.sqrt(angle2)
+            c1 = math.sin(angle) / angle
+            c2 = (1.0 - math.cos(angle)) / angle2
+        # I + c1 S + c2 S², S the skew matrix of nu; S² = nu nuᵀ - |nu|² I
+        out[i, 0, 0] = 1.0 + c2 * (x * x - angle2)
+        out[i, 1, 1] = 1.0 + c2 * (y * y - angle2)
+        out[i, 2, 2] = 1.0 + c2 * (z * z - angle2)
+        out[i, 0, 1] = -c1 * z + c2 * x * y
+        out[i, 1, 0] = c1 * z + c2 * x * y
+        out[i, 0, 2] = c1 * y + c2 * x * z
+        out[i, 2, 0] = -c1 * y + c2 * x * z
+        out[i, 1, 2] = -c1 * x + c2 * y * z
+        out[i, 2, 1] = c1 * x + c2 * y * z
+    return out
+
+
+
+@njit(cache=True, error_model="numpy")
+def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
+    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
+    c, v, w = balls.position, balls.velocity, balls.omega
+    ro, rr, rv, rw = frames.origin, frames.rotation, frames.velocity, frames.omega
+    groove, conformity, sign = geometry.groove, geometry.conformity, geometry.sign
+    ball_radius, pitch_diameter, e_prime = geometry.ball_radius, geometry.pitch_diameter, geometry.e_prime
+    damping_ratio, min_film, eta0, c_p, max_barus = law.damping_ratio, law.min_film, law.eta0, law.c_p, law.max_barus
+    force, moment, penetration, load = out.force, out.moment, out.penetration, out.load
+    z = c.shape[1]
+    diam = 2.0 * ball_radius
+    p_cap = max_barus / c_p if c_p > 0.0 else np.inf
+    ib = idx // (2 * z)
+    k = (idx // z) % 2
+    j = idx % z
+    o = ro[ib, k]
+    R = rr[ib, k]
+    vo = rv[ib, k]
+    wr = rw[ib, k]
+    ri, zi, tube = groove[k, 0], groove[k, 1], groove[k, 2]
+    sgn = sign[k]
+    f_conf = conformity[k]
+    cx, cy, cz = c[ib, j, 0], c[ib, j, 1], c[ib, j, 2]
+    rx_, ry_, rz_ = cx - o[0], cy - o[1], cz - o[2]
+    # race-frame position (Rᵀ rel) and the groove torus (MODEL.md §2)
+    lx = R[0, 0] * rx_ + R[1, 0] * ry_ + R[2, 0] * rz_
+    ly = R[0, 1] * rx_ + R[1, 1] * ry_ + R[2, 1] * rz_
+    lz = R[0, 2] * rx_ + R[1, 2] * ry_ + R[2, 2] * rz_
+    rho_c = math.hypot(lx, ly)
+    ex, ey = lx / rho_c, ly / rho_c
+    gx, gy, gz = ri * ex, ri * ey, zi
+    dx, dy, dz = lx - gx, ly - gy, lz - gz
+    dist = math.sqrt(dx * dx + dy * dy + dz * dz)
+    nlx, nly, nlz = dx / dist, dy / dist, dz / dist
+    angle = math.atan2(sgn * nlz, sgn * (nlx * ex + nly * ey))
+    pen = dist - tube
+    penetration[ib, k, j] = pen
+    nx = R[0, 0] * nlx + R[0, 1] * nly + R[0, 2] * nlz
+    ny = R[1, 0] * nlx + R[1, 1] * nly + R[1, 2] * nlz
+    nz = R[2, 0] * nlx + R[2, 1] * nly + R[2, 2] * nlz
+    t1x = -R[0, 0] * ey + R[0, 1] * ex  # R (e_z x radial)
+    t1y = -R[1, 0] * ey + R[1, 1] * ex
+    t1z = -R[2, 0] * ey + R[2, 1] * ex
+    t2x = ny * t1z - nz * t1y
+    t2y = nz * t1x - nx * t1z
+    t2z = nx * t1y - ny * t1x
+    # velocities at the contact centre p = c + r n (MODEL.md §6)
+    wbx, wby, wbz = w[ib, j, 0], w[ib, j, 1], w[ib, j, 2]
+    px, py, pz = ball_radius * nx, ball_radius * ny, ball_radius * nz  # p - c
+    qx, qy, qz = rx_ + px, ry_ + py, rz_ + pz  # p - o
+    sx = vo[0] + wr[1] * qz - wr[2] * qy - (v[ib, j, 0] + wby * pz - wbz * py)
+    sy = vo[1] + wr[2] * qx - wr[0] * qz - (v[ib, j, 1] + wbz * px - wbx * pz)
+    sz = vo[2] + wr[0] * qy - wr[1] * qx - (v[ib, j, 2] + wbx * py - wby * px)
+    u_x = sx * t1x + sy * t1y + sz * t1z
+    u_y = sx * t2x + sy * t2y + sz * t2z
+    spin = (wr[0] - wbx) * nx + (wr[1] - wby) * ny + (wr[2] - wbz) * nz
+    # groove-centre velocity -> approach rate
+    ggx = R[0, 0] * gx + R[0, 1] * gy + R[0, 2] * gz
+    ggy = R[1, 0] * gx + R[1, 1] * gy + R[1, 2] * gz
+    ggz = R[2, 0] * gx + R[2, 1] * gy + R[2, 2] * gz
+    vgx = vo[0] + wr[1] * ggz - wr[2] * ggy
+    vgy = vo[1] + wr[2] * ggx - wr[0] * ggz
+    vgz = vo[2] + wr[0] * ggy - wr[1] * ggx
+    rate = (v[ib, j, 0] - vgx) * nx + (v[ib, j, 1] - vgy) * ny + (v[ib, j, 2] - vgz) * nz
+    # the contact moves with the ball's orbit relative to the race
+    orx = v[ib, j, 0] - (vo[0] + wr[1] * rz_ - wr[2] * ry_)
+    ory = v[ib, j, 1] - (vo[1] + wr[2] * rx_ - wr[0] * rz_)
+    orz = v[ib, j, 2] - (vo[2] + wr[0] * ry_ - wr[1] * rx_)
+    orbit_rel = (orx * t1x + ory * t1y + orz * t1z) / rho_c
+    rho_p = math.hypot(lx + ball_radius * nlx, ly + ball_radius * nly)
+    entrainment = -0.5 * u_x - orbit_rel * rho_p
+    # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
+    r_x = diam * (pitch_diameter + sgn * diam * math.cos(angle)) / (2.0 * pitch_diameter)
+    r_y = f_conf * diam / (2.0 * f_conf - 1.0)
+    ratio = max(r_y / r_x, 1.0)
+    ell = 1.0339 * ratio ** 0.6360
+    first = 1.5277 + 0.6023 * math.log(ratio)
+    second = 1.0003 + 0.5968 / ratio
+    radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
+    stiff = math.pi * ell * e_prime * math.sqrt(second * radius / (4.5 * first ** 3))
+    q = 0.0
+    if pen > 0.0:
+        q = stiff * pen ** 1.5
+        if damping_ratio > 0.0:
+            q += 2.0 * damping_ratio * math.sqrt(1.5 * stiff * math.sqrt(pen) * geometry.ball_mass) * rate
+        q = max(q, 0.0)
+    load[ib, k, j] = q
+    fx = 0.0
+    fy = 0.0
+    mz = 0.0
+    m_r = 0.0  # rolling-resistance couple about t2, on the ball
+    f_b = 0.0  # and its net force on the ball along t1 at the contact point
+    if law.traction == 1 and q > 0.0:
+        base = 6.0 * second * q * radius / (math.pi * e_prime)
+        sa = np.cbrt(ell * ell * base)
+        sb = np.cbrt(base / ell)
+        p_max = 1.5 * q / (math.pi * sa * sb)
+        # Hamrock–Dowson central film (P17), floored
+        u_d = eta0 * abs(entrainment) / (e_prime * r_x)
+        w_d = q / (e_prime * r_x * r_x)
+        h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
+            1.0 - 0.61 * math.exp(-0.73 * ell))
+        rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
+        cs = ContactState(q, sa, sb, p_max, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
+        phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1
+        h = max(phi_t * h, min_film)
+        fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
+        if not law.spin_moment:
+            mz = 0.0
+        f_b, m_r = contact_loads(terms, cs, phi_t)  # stage 2
+    Fx = -q * nx + fx * t1x + fy * t2x
+    Fy = -q * ny + fx * t1y + fy * t2y
+    Fz = -q * nz + fx * t1z + fy * t2z
+    if f_b != 0.0:  # (a separate sum: the contact without rolling resistance stays bit for bit)
+        Fx += f_b * t1x
+        Fy += f_b * t1y
+        Fz += f_b * t1z
+    force[ib, k, j, 0] = Fx
+    force[ib, k, j, 1] = Fy
+    force[ib, k, j, 2] = Fz
+    # lever arm r n: the normal part has no moment about the ball centre
+    moment[ib, k, j, 0] = ball_radius * (ny * Fz - nz * Fy) + mz * nx + m_r * t2x
+    moment[ib, k, j, 1] = ball_radius * (nz * Fx - nx * Fz) + mz * ny + m_r * t2y
+    moment[ib, k, j, 2] = ball_radius * (nx * Fy - ny * Fx) + mz * nz + m_r * t2z
+
+
+@njit(cache=True, error_model="numpy")
+def race_contacts(balls, frames, geometry, law, tables, terms, out):
+    """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
+
+    Parameters
+    ----------
+    balls : BallStates
+        Ball centres (m), velocities (m/s), GLOBAL angular velocities (rad/s), (B, Z, 3).
+    frames : RaceFrames
+        Origin, rotation (third column: axis), origin velocity and angular velocity of the
+        inner (index 0) and outer (1) race frames of each state.
+    geometry : RaceGeometry
+    law : LawRecord
+        ``traction`` 0: normal forces only; 1: Crook (fast rule).
+    tables : CrookTables
+        :func:`contact.kernels.crook.crook_tables`.
+    terms : contact.terms.TermRecord
+        The per-contact terms (thermal film, rolling resistance).
+    out : ContactOutputs
+        Written: force on each ball at its contact with race k (N), moment about the ball
+        centre (N m), elastic approach δ (m) and normal load Q (N).
+    """
+    for idx in range(balls.position.shape[0] * 2 * balls.position.shape[1]):
+        _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, todo):
+    """:func:`race_contacts` with the contacts spread over numba's threads, for the flat
+    contact indices ``todo`` only (state idx // 2Z, race idx // Z % 2, ball idx % Z; int64):
+    the rest of the outputs is left as it is (a Jacobian's race columns change one race's
+    contacts only)."""
+    for n in prange(todo.shape[0]):
+        _race_contact(todo[n], balls, frames, geometry, law, tables, terms, out)

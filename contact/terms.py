@@ -1,0 +1,119 @@
+"""Per-contact terms: the one place where physics beyond the normal load and the traction
+rule enters a ball–race contact (the extension point; docs/ARCHITECTURE.md has a worked
+example).
+
+A term is a scalar law in its own module, written once as a numba function (e.g.
+:func:`contact.thermal_film.film_factor`, :func:`contact.rolling_resistance.rolling_loads`),
+and a field of :class:`TermRecord` holding its parameters (0: off). Both force paths call
+the stages below for every loaded contact — the compiled kernel
+(:func:`contact.kernels.race.race_contacts`) directly, the numpy path
+(:func:`contact.ballrace.ball_race_forces`) through :func:`contact_terms` — so a term is
+computed once, by the same code, in both. The stages, in the order a contact is evaluated:
+
+1. :func:`film_factor` — a factor on the isothermal central film h (the thermal film, §11e);
+2. :func:`contact_loads` — forces and couples added on the ball (the rolling resistance,
+   §11b): a force along the rolling direction t1 at the contact point and a couple about
+   the transverse axis t2; the race takes the opposite.
+
+A term that is off costs one comparison per contact.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from .kernel_cache import drop_stale
+
+# the stages call the term laws of other files: numba's cache is per file
+_HERE = Path(__file__).parent
+drop_stale(__file__, [_HERE / "terms.py", _HERE / "thermal_film.py", _HERE / "rolling_resistance.py"])
+
+from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
+from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
+
+__all__ = ["TermRecord", "ContactState", "term_record", "film_factor", "contact_loads", "contact_terms"]
+
+#: floor of the thermal film factor φ_T (MODEL.md §11e)
+THERMAL_FLOOR = 0.05
+
+
+class TermRecord(NamedTuple):
+    """Parameters of the per-contact terms; a term whose parameter is 0 is off."""
+
+    heating: float  #: c_ηT / K_c of the thermal film factor (MODEL.md §11e), m/W
+    rolling_width: float  #: truncation width 𝓛 of the rolling resistance (MODEL.md §11b, the ball diameter), m
+
+
+class ContactState(NamedTuple):
+    """One loaded contact as the terms see it (SI units, the contact frame of MODEL.md §2)."""
+
+    load: float  #: Q, N
+    a: float  #: Hertz semi-axis across the rolling direction, m
+    b: float  #: along it, m
+    max_pressure: float  #: p_max, Pa
+    r_x: float  #: reduced radius along the rolling direction, m
+    r_y: float  #: across it, m
+    slip: float  #: u_x, race − ball along t1, m/s
+    entrainment: float  #: signed mean surface speed relative to the contact, m/s
+    rolling_rate: float  #: (ω_ball − ω_race) · t2, rad/s
+    ball_radius: float  #: m
+    e_prime: float  #: E', Pa
+    viscosity: float  #: η0, Pa s
+
+
+def term_record(law, lubricant, ball_diameter) -> TermRecord:
+    """The :class:`TermRecord` of a :class:`contact.ballrace.ContactLaw` with ``lubricant``
+    and a ball of ``ball_diameter`` (m): the terms the law switches on (Crook laws only)."""
+    crook = law.crook
+    heating = float(lubricant.temperature_viscosity / lubricant.thermal_conductivity)
+    return TermRecord(heating if (crook and law.thermal_film) else 0.0,
+                      float(ball_diameter) if (crook and law.rolling_resistance) else 0.0)
+
+
+@njit(cache=True, error_model="numpy")
+def film_factor(terms, cs):
+    """Stage 1: the factor on the isothermal film thickness of contact ``cs``."""
+    phi = 1.0
+    if terms.heating > 0.0 and cs.entrainment != 0.0:  # inlet shear heating (MODEL.md §11e)
+        phi = thermal_film_factor(cs.entrainment, cs.slip, cs.max_pressure, cs.e_prime, cs.viscosity, terms.heating,
+                                  THERMAL_FLOOR)
+    return phi
+
+
+@njit(cache=True, error_model="numpy")
+def contact_loads(terms, cs, phi):
+    """Stage 2: (force on the ball along t1 at the contact point, N; couple on the ball about
+    t2, N m) added to contact ``cs`` whose film factor is ``phi``."""
+    push = 0.0
+    couple = 0.0
+    if terms.rolling_width > 0.0 and cs.entrainment != 0.0:  # hydrodynamic rolling resistance (MODEL.md §11b)
+        f_r = hydrodynamic_force(cs.load, cs.entrainment, cs.r_x, cs.r_y, cs.a, cs.b, cs.e_prime, cs.viscosity,
+                                 terms.rolling_width, phi)
+        couple, push = rolling_loads(f_r, cs.r_x, cs.ball_radius, cs.rolling_rate)
+    return push, couple
+
+
+@njit(cache=True, error_model="numpy")
+def _contact_terms(terms, state, out):
+    for i in range(state.load.shape[0]):
+        cs = ContactState(state.load[i], state.a[i], state.b[i], state.max_pressure[i], state.r_x[i],
+                          state.r_y[i], state.slip[i], state.entrainment[i], state.rolling_rate[i],
+                          state.ball_radius[i], state.e_prime[i], state.viscosity[i])
+        phi = film_factor(terms, cs)
+        out[0, i] = phi
+        out[1, i], out[2, i] = contact_loads(terms, cs, phi)
+
+
+def contact_terms(terms: TermRecord, **state) -> np.ndarray:
+    """Both stages for n contacts (the numpy path): ``state`` the fields of
+    :class:`ContactState` as arrays (n,) or scalars. Returns rows (film factor, force along t1
+    on the ball, couple about t2 on the ball), (3, n)."""
+    n = max(np.size(v) for v in state.values())
+    arrays = ContactState(*(np.ascontiguousarray(np.broadcast_to(np.asarray(state[k], dtype=float), (n,)))
+                            for k in ContactState._fields))
+    out = np.empty((3, n))
+    _contact_terms(terms, arrays, out)
+    return out
