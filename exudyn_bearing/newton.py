@@ -10,19 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["damped_newton", "forward_jacobian"]
+from .jacobian.differences import forward_jacobian
 
-
-def forward_jacobian(fun, x, f0=None, step=1e-6):
-    """Forward-difference Jacobian of ``fun`` at ``x`` (columns one unknown at a time; the
-    unknowns are scaled to order one, so one absolute ``step`` serves all)."""
-    f0 = fun(x) if f0 is None else f0
-    jac = np.empty((f0.size, x.size))
-    for k in range(x.size):
-        xk = x.copy()
-        xk[k] += step
-        jac[:, k] = (fun(xk) - f0) / step
-    return jac
+__all__ = ["damped_newton"]
 
 
 def damped_newton(fun, x, lo, hi, tol, jac=None, max_iterations=25):

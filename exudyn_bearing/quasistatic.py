@@ -30,6 +30,7 @@ from contact import geometry
 from contact.hertz import effective_ball_stiffness
 from .bearing import Bearing
 from .errors import QuasiStaticError
+from .jacobian.differences import central_jacobian
 from .records import units_of
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
@@ -242,18 +243,6 @@ class _Geometric:
         f = q[:, None] * n
         points = centres + self.b.ball_radius * n
         return f.sum(axis=0), np.cross(points, f).sum(axis=0)
-
-
-def central_jacobian(fun, x, steps, dofs):
-    """Central-difference Jacobian of ``fun`` (vector -> vector) with respect to the entries
-    ``dofs`` of ``x``, perturbed by ``steps[dof]``; shape (len(fun(x)), len(dofs))."""
-    columns = []
-    for dof in dofs:
-        xp, xm = x.copy(), x.copy()
-        xp[dof] += steps[dof]
-        xm[dof] -= steps[dof]
-        columns.append((fun(xp) - fun(xm)) / (2 * steps[dof]))
-    return np.stack(columns, axis=1)
 
 
 def _radial_hint(axial, radial, alpha, hold_axial) -> str:

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .bearing import Bearing
-from .quasistatic import QuasiStaticError, _rotation, central_jacobian, solve_load_distribution
+from .jacobian import central_jacobian
+from .quasistatic import QuasiStaticError, _rotation, solve_load_distribution
 
 __all__ = ["ShaftBearing", "ShaftEquilibrium", "solve_shaft"]
 

@@ -2,7 +2,8 @@
 problems with known roots."""
 import numpy as np
 
-from exudyn_bearing.newton import damped_newton, forward_jacobian
+from exudyn_bearing.jacobian import forward_jacobian
+from exudyn_bearing.newton import damped_newton
 
 
 def test_line_search_reaches_the_root_where_plain_newton_diverges():

@@ -7,6 +7,8 @@ import numpy as np
 
 from contact.kinematics import rotation_matrices
 
+from . import kernels
+
 __all__ = ["JACOBIAN_VELOCITY_STEP", "block_jacobian", "jacobian_columns"]
 
 #: Velocity step of the block Jacobian's difference quotients per m/s of the balls' mean speed
@@ -28,8 +30,9 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     which is what Exudyn's Lie-group nodes expect. The compiled path takes the balls'
     rotation columns from their angular velocity columns and a race's translation columns
     from the balls' translation columns by the chain rule
-    (:func:`exudyn_bearing.compiled.ball_rotation_columns`, :func:`~exudyn_bearing.compiled.
-    race_translation_columns`; MODEL.md §10); the numpy path (the reference) perturbs them.
+    (:func:`~exudyn_bearing.jacobian.kernels.ball_rotation_columns`,
+    :func:`~exudyn_bearing.jacobian.kernels.race_translation_columns`; MODEL.md §10); the numpy
+    path (the reference) perturbs them.
     Forward differences; all perturbed states go through ONE batched evaluation (per-call
     overhead dominates at 32 contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
     like the slots.
@@ -62,27 +65,22 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     if turn is None:  # exp(eps e_k~), k = 0, 1, 2
         turn = spec["turn"].setdefault(eps_rotation, rotation_matrices(eps_rotation * np.eye(3)))
     if con._compiled is not None:  # the same in compiled loops (~1.3 ms of numpy per Jacobian)
-        from . import compiled as compiled_glue
-
-        nb = 1 + len(spec["arrays"][0])
+        arrays = spec["arrays"]  # group, k, velocity?, group mask, block?, slot, balls, others
+        nb = 1 + len(arrays[0])
         p2, r2 = np.empty((nb,) + pos.shape), np.empty((nb,) + rot.shape)
         v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
-        steps = compiled_glue.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl),
-                                              *spec["arrays"][:4],
-                                              np.array([eps_position, eps_rotation, eps_velocity, eps_angular]),
-                                              turn,
-                                              p2, r2, v2, w2)
+        steps = kernels.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl), arrays[:4],
+                                        np.array([eps_position, eps_rotation, eps_velocity, eps_angular]), turn,
+                                        (p2, r2, v2, w2))
         raw = {"slots": spec["chain"]} if spec["chain"].size else None
         out, react, _, _, _ = con._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"], raw_reactions=raw)
         jac = np.empty((n6, n6))
-        compiled_glue.jacobian_assemble(out, react, steps, *spec["arrays"][:3], *spec["arrays"][4:], f_q, f_qt,
-                                        jac)
-        compiled_glue.ball_rotation_columns(out, react, steps, spec["wcol"], spec["arrays"][4], spec["ball_group"],
-                                            spec["arrays"][6], spec["arrays"][7], np.ascontiguousarray(wl), f_q, jac)
+        kernels.jacobian_assemble(out, react, steps, arrays[:3] + arrays[4:], f_q, f_qt, jac)
+        kernels.ball_rotation_columns(out, react, steps, spec["wcol"], arrays[4], spec["ball_group"], arrays[6],
+                                      arrays[7], np.ascontiguousarray(wl), f_q, jac)
         if raw is not None:
-            compiled_glue.race_translation_columns(raw["react"], steps, spec["tcol"], spec["chain"],
-                                                   spec["chain_rows"], spec["arrays"][6], pos,
-                                                   np.ascontiguousarray(rot), f_q, f_qt, jac)
+            kernels.race_translation_columns(raw["react"], steps, spec["tcol"], spec["chain"], spec["chain_rows"],
+                                             arrays[6], pos, np.ascontiguousarray(rot), f_q, f_qt, jac)
         return jac
     nb = 1 + len(columns)
     p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
@@ -134,12 +132,12 @@ def jacobian_columns(con) -> dict:
     columns = [(gi, group, k, which) for gi, group in enumerate(groups) for k in range(6)
                for which in ("q", "v") if k not in frozen.get(int(group[0]), ())]
     # the compiled path takes the balls' rotation columns from their angular velocity
-    # columns (compiled.ball_rotation_columns): three perturbed states fewer
+    # columns (kernels.ball_rotation_columns): three perturbed states fewer
     is_ball = [int(group[0]) in ball_slots for group in groups]
     kept = [c for c in columns if not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]
     # ... and a race's translation columns from the balls' translation columns: a ball-race
     # contact depends on the two positions and velocities only through their differences
-    # (compiled.race_translation_columns). Not for the race guiding the cage (its land
+    # (kernels.race_translation_columns). Not for the race guiding the cage (its land
     # force depends on the race), a race held in translation, or a spring-chain cage (no
     # ball group perturbed as one)
     chain = []
