@@ -4,7 +4,7 @@ time, reference bearing at 1800 rpm; and the cost of the quasi-dynamic solve on 
 
     python benchmarks/combined_start.py [--axial 300,800] [--radial 200] [--time 2.0]
 
-docs/DEVELOPMENT.md §17 holds a run of it.
+docs/DEVELOPMENT.md, 'Start states', gives the figures of a run of it.
 """
 import argparse
 import time

@@ -194,7 +194,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m).
     Serial: calling the parallel contact kernel from here (2 threads: case (a) 143 -> 83 us
     a call) made Dask worker processes crash once this module was recompiled against a cached
-    contact module (DEVELOPMENT.md §18)."""
+    contact module (DEVELOPMENT.md, 'Numba cache invalidation')."""
     mount = Mount(*mount)
     balls, slots, cage_slot, held = mount.balls, mount.slots, mount.cage_slot, mount.held
     geometry, law, tables, terms, cage, pocket, guide = physics

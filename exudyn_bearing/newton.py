@@ -3,8 +3,8 @@
 
 Both solve n equations in n scaled unknowns of order one within box bounds, from a start
 near the root (a continuation step). SciPy's bounded trust-region least squares took tens
-of iterations per step there (docs/DEVELOPMENT.md §17); plain Newton with a backtracking
-line search on the residual norm takes a handful.
+of iterations per step there (docs/DEVELOPMENT.md, 'Start states'); plain Newton with a
+backtracking line search on the residual norm takes a handful.
 """
 from __future__ import annotations
 

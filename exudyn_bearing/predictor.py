@@ -5,7 +5,8 @@ Exudyn's generalized-alpha step starts Newton from zero acceleration. The balls 
 precess at steady accelerations (hundreds of m/s², ~1e4 rad/s²), so that start lies
 a_n/β' inside the stiff Hertz and traction laws (an initial residual of ~57 N on the
 deep-groove case of docs/heavy_load_matrix.md, where a converged step leaves 0.006 N) and
-Newton crosses the traction's knee on its way back (docs/DEVELOPMENT.md §18).
+Newton crosses the traction's knee on its way back (docs/DEVELOPMENT.md, 'Newton's start and
+tolerance').
 
 :class:`NewtonPredictor` replaces Newton's *first iterate* for the bearings' nodes by the
 state one Exudyn increment ``δ = a_n / β'`` from the start: q + δ for translations, q ∘ exp(δ)

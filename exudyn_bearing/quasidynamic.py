@@ -12,9 +12,9 @@ the race only, so the Jacobian is differenced in 6 + 4 evaluations.
 Light radial loads on a skidding bearing have several balances; the one the dynamic model
 settles near is reached by continuation in the radial load from the axial steady state
 (:func:`exudyn_bearing.steady_state`), in steps of at most a tenth of the axial load
-(docs/DEVELOPMENT.md §15); a pure radial load from the steady state at a seed axial load,
-which is then taken back to zero (§17). Each step is solved by Newton's method with a line
-search (:mod:`exudyn_bearing.newton`).
+(docs/DEVELOPMENT.md, 'Start states'); a pure radial load from the steady state at a seed
+axial load, which is then taken back to zero (same section). Each step is solved by Newton's
+method with a line search (:mod:`exudyn_bearing.newton`).
 """
 from __future__ import annotations
 

@@ -64,7 +64,7 @@ class SolverSettings:
         whose steps converge at 2e-5 s but not at its default 3.33e-5 s, climbs back to the
         failing step every 10 steps with 7 (63.9 s wall per 0.1 s) and not with 5 (about
         12 s); with 4 the deep-groove case at 1 kN radial stays at the halved step after
-        its start transient (2x its steps); docs/heavy_load_matrix.md.
+        its start transient (2x its steps); docs/DEVELOPMENT.md, 'Solver defaults and the step rule'.
     predictor : bool
         Implicit solvers: start each step's Newton iteration from the previous step's
         acceleration of the bearings' nodes (:mod:`exudyn_bearing.predictor`, MODEL.md §10b)

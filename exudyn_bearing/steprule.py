@@ -7,7 +7,7 @@ m on the linearized Hertz springs k = dQ/dδ = 3Q/(2δ) of its inner and outer c
 
     ω_n = √((k_i + k_o) / m).
 
-Measured (generalized-alpha, default law, docs/heavy_load_matrix.md): the reference bearing
+Measured (generalized-alpha, default law, docs/MODEL.md §10a): the reference bearing
 at 1.3, 2.2 + 2 radial and 10 kN runs without a step cut at 1e-4 s, ω_n h = 5.6–7.8; the
 deep-groove 6205-size bearing at 1 kN radial + 200 N ran 215 steps for 200 nominal at
 2.5e-5 s (ω_n h = 5.4) and 157 for 143 at 3.5e-5 s; the 7-mm-ball spindle bearing at
