@@ -14,7 +14,7 @@ import numpy as np
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT, SolverSettings, simulate, steady_state
 from exudyn_bearing.presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG,
                                     SPINDLE_40MM_BEARING)
-from exudyn_bearing.quasidynamic import combined_load_state
+from exudyn_bearing.solvers.quasidynamic import combined_load_state
 
 MARKS = (0.05, 0.1, 0.2, 0.4, 0.8, 1.2, 1.6, 2.0)
 SOLVES = (("reference", REFERENCE_BEARING, REFERENCE_LUBRICANT, REFERENCE_DRAG, 400.0, 100.0, 1800.0),

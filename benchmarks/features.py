@@ -13,9 +13,9 @@ import numpy as np
 import exudyn as exu
 
 from contact.ballrace import ContactLaw
-from exudyn_bearing.builder import CreateAngularContactBearing
+from exudyn_bearing.model.builder import CreateAngularContactBearing
 from exudyn_bearing.cage import CageModel
-from exudyn_bearing.runner import SolverSettings, run_solver
+from exudyn_bearing.simulation.runner import SolverSettings, run_solver
 
 OPTIONS = {
     "full model (Crook EHD with limiting shear, spin moment, rigid cage, drag)": {},

@@ -25,10 +25,10 @@ import time
 from pathlib import Path
 
 from contact.ballrace import ContactLaw
-from exudyn_bearing.outputs import settled_label
+from exudyn_bearing.results.outputs import settled_label
 from exudyn_bearing import simulate
 from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, SPINDLE_40MM_BEARING
-from exudyn_bearing.records import inputs_record
+from exudyn_bearing.results.records import inputs_record
 
 AXIAL = 1000.0  #: N
 SPEEDS = (2000.0, 4000.0, 6000.0, 8000.0, 10000.0)  #: rpm

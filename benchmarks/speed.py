@@ -27,7 +27,7 @@ from exudyn.utilities import *  # noqa: F401,F403  (Exudyn scene style)
 import exudyn.machines as machines
 
 from contact.ballrace import ContactLaw
-from exudyn_bearing.outputs import settled_label
+from exudyn_bearing.results.outputs import settled_label
 from exudyn_bearing import REFERENCE_BEARING as B, CreateAngularContactBearing, SolverSettings, races, run_solver
 
 

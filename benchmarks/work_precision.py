@@ -27,7 +27,7 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from exudyn_bearing.errors import BearingSimulationError
-from exudyn_bearing.runner import SolverSettings, simulate
+from exudyn_bearing.simulation.runner import SolverSettings, simulate
 
 CASES = {"a": dict(axial=1300.0, radial=0.0), "b": dict(axial=2200.0, radial=2000.0)}
 QUANTITIES = ("cage_slip_pp", "kinematic_cage_slip_pp", "ball_spin_rad_s", "peak_load_n")

@@ -3,7 +3,7 @@
 numba's on-disk cache (``@njit(cache=True)``) is keyed on the source file of the function
 itself: a cached kernel that calls (or inlines) a function from another file keeps the old
 machine code of that callee after the callee's file changed — e.g. the glue's one-state
-kernel (exudyn_bearing/compiled.py) kept the previous spring-chain cage of
+kernel (exudyn_bearing/model/compiled.py) kept the previous spring-chain cage of
 contact/compiled.py and disagreed with the numpy path by 1.5 kN. :func:`drop_stale` removes
 a module's cache files when any source it depends on changed since they were written.
 """

@@ -130,7 +130,7 @@ def main():
 def plot(rows, out, compare=None, compare_label="other run"):
     """The figure of ``rows``, with the kinematic slip of the ``compare`` JSON if given."""
     try:
-        from exudyn_bearing.plots import plot_skid_curve
+        from exudyn_bearing.results.plots import plot_skid_curve
     except ImportError as err:
         print(f"{err}: no plot")
         return

@@ -10,7 +10,7 @@ outside the span); the inner races are pushed ``--preload-um`` into each bearing
 preloads the pair. The gear load is ramped in over ``--ramp`` s.
 
 At the end the shaft position and both bearings' reactions are compared with the 5-DOF
-quasi-static solution of the whole shaft (:func:`exudyn_bearing.shaft.solve_shaft`).
+quasi-static solution of the whole shaft (:func:`exudyn_bearing.solvers.shaft.solve_shaft`).
 
     python demos/hss_shaft.py                  # 0.04 s, prints the comparison
     python demos/hss_shaft.py --time 0.1 --plot
@@ -152,7 +152,7 @@ def main():
         print(f"           kinematic cage slip {s['kinematic_cage_slip_percent']:.3f} %, max inner load "
               f"{s['max_inner_load']:.0f} N (quasi-static {qs['inner_load_max_N'][k]:.0f} N)")
     if args.plot:
-        from exudyn_bearing.plots import plot_run
+        from exudyn_bearing.results.plots import plot_run
 
         path = Path("out/hss_shaft")
         path.mkdir(parents=True, exist_ok=True)

@@ -17,20 +17,20 @@ from contact.lubricant import Lubricant
 from . import races
 from .bearing import BallDrag, Bearing, Material, STEEL
 from .bearingfile import BearingFile, dumps_bearing, load_bearing, loads_bearing, save_bearing
-from .builder import BearingHandle, CreateAngularContactBearing
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
-from .outputs import BearingResults, settled_label
-from .plots import plot_run, plot_skid_curve
+from .model.builder import BearingHandle, CreateAngularContactBearing
 from .presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
                       REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM, SPINDLE_40MM_BEARING)
-from .quasidynamic import AzimuthStates, combined_load_state
-from .quasistatic import LoadDistribution, solve_load_distribution
-from .runner import RunInfo, SimulationSummary, SolverSettings, run_solver, simulate
-from .shaft import ShaftBearing, ShaftEquilibrium, solve_shaft
-from .skidmap import SkidMap, skid_map
-from .steady import SteadyState, steady_state
+from .results.outputs import BearingResults, settled_label
+from .results.plots import plot_run, plot_skid_curve
+from .simulation.runner import RunInfo, SimulationSummary, SolverSettings, run_solver, simulate
+from .solvers.quasidynamic import AzimuthStates, combined_load_state
+from .solvers.quasistatic import LoadDistribution, solve_load_distribution
+from .solvers.shaft import ShaftBearing, ShaftEquilibrium, solve_shaft
+from .solvers.steady import SteadyState, steady_state
+from .studies.skidmap import SkidMap, skid_map
 
 __version__ = "0.1.0"
 

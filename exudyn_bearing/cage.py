@@ -1,5 +1,5 @@
 """The cage of a bearing model (MODEL.md §1, §11d): how it is modelled, guided and loaded.
-The forces themselves are :mod:`contact.cage`'s; :class:`~exudyn_bearing.connector.BearingConnector`
+The forces themselves are :mod:`contact.cage`'s; :class:`~exudyn_bearing.model.connector.BearingConnector`
 applies them."""
 from __future__ import annotations
 

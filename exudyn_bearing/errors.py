@@ -14,4 +14,4 @@ class QuasiStaticError(RuntimeError):
 
 class TractionCoefficientWarning(UserWarning):
     """A contact's traction coefficient exceeded
-    :data:`exudyn_bearing.outputs.TRACTION_COEFFICIENT_LIMIT`."""
+    :data:`exudyn_bearing.results.outputs.TRACTION_COEFFICIENT_LIMIT`."""

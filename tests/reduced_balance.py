@@ -28,7 +28,7 @@ from scipy.optimize import least_squares
 
 from contact import film
 from contact.traction import crook_traction
-from exudyn_bearing.quasistatic import solve_load_distribution
+from exudyn_bearing.solvers.quasistatic import solve_load_distribution
 
 MICRON = 1e-6
 

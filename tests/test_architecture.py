@@ -113,3 +113,28 @@ def test_packages_import_only_what_the_architecture_allows():
                 if top not in allowed and top not in stdlib:
                     bad.append((str(path.relative_to(ROOT)), name))
     assert bad == []
+
+
+#: the layers of exudyn_bearing (docs/ARCHITECTURE.md): each may import the ones before it
+LAYERS = ("top", "results", "jacobian", "solvers", "model", "simulation", "studies")
+#: modules that only gather the others (the package's public names, ``python -m``)
+FACADES = {"exudyn_bearing", "exudyn_bearing.__main__"}
+
+
+def _layer(module):
+    parts = module.split(".")
+    return parts[1] if len(parts) > 2 or (len(parts) == 2 and parts[1] in LAYERS) else "top"
+
+
+def test_subpackages_import_only_earlier_layers():
+    """top-level parameter modules <- results <- jacobian <- solvers <- model <- simulation <-
+    studies: a subpackage never imports a later one, so the layout reads in one direction."""
+    bad = []
+    for module, targets in _graph().items():
+        if not module.startswith("exudyn_bearing") or module in FACADES:
+            continue
+        for target in targets:
+            if target.startswith("exudyn_bearing") and target not in FACADES:
+                if LAYERS.index(_layer(target)) > LAYERS.index(_layer(module)):
+                    bad.append((module, target))
+    assert bad == []

@@ -10,7 +10,7 @@ import pytest
 exu = pytest.importorskip("exudyn")
 from exudyn.utilities import InertiaCylinder  # noqa: E402
 
-from exudyn_bearing.runner import SolverSettings, run_solver  # noqa: E402
+from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
 from tests.test_shaft import _demo  # noqa: E402  (loads demos/hss_shaft.py)
 
 RPM = 1800.0

@@ -15,7 +15,7 @@ from contact.terms import term_record
 from contact.traction import crook_traction
 from exudyn_bearing import REFERENCE_BEARING as B
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB
-from exudyn_bearing.outputs import cage_slip
+from exudyn_bearing.results.outputs import cage_slip
 
 # the paper's bearing (table 1a), typed here rather than read from the preset
 D, D_M, ALPHA = 25e-3, 155e-3, math.radians(40.0)
@@ -84,8 +84,8 @@ def test_p19_with_rotating_outer_race(rpm_i, rpm_o):
 exu = pytest.importorskip("exudyn")
 
 from exudyn_bearing import races  # noqa: E402
-from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
-from exudyn_bearing.runner import SolverSettings, run_solver  # noqa: E402
+from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
+from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
 
 
 @pytest.mark.parametrize("rpm_i,rpm_o", [(0.0, 600.0), (1800.0, -600.0)],

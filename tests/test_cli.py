@@ -381,8 +381,8 @@ def test_render_opengl_under_xvfb(tmp_path):
 
 def test_plot_run_and_plot_skid_curve(reference_run, tmp_path):
     plt = pytest.importorskip("matplotlib.pyplot")
-    from exudyn_bearing.plots import plot_run, plot_skid_curve
-    from exudyn_bearing.runner import simulate
+    from exudyn_bearing.results.plots import plot_run, plot_skid_curve
+    from exudyn_bearing.simulation.runner import simulate
 
     run = simulate(axial=1300.0, rpm=1800.0, time=0.003)
     fig = plot_run(run.results, tmp_path / "run.png", title="F_a 1300 N")

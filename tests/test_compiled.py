@@ -1,4 +1,4 @@
-"""The compiled contact kernels (contact/kernels/, exudyn_bearing/compiled.py) against
+"""The compiled contact kernels (contact/kernels/, exudyn_bearing/model/compiled.py) against
 the numpy functions of contact/ on the same states.
 
 The numpy path is the reference: the traction is checked against the ACCURATE quadrature
@@ -22,7 +22,7 @@ from contact.ballrace import ContactLaw  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
-from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
+from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.cage import CageModel  # noqa: E402
 from exudyn_bearing.jacobian import block_jacobian, jacobian_columns  # noqa: E402
 
@@ -382,7 +382,7 @@ def test_land_kernel_is_the_numpy_land_force():
 def test_compilation_is_announced_once_when_no_cache_exists(monkeypatch, tmp_path, capsys):
     """A fresh install (no numba cache next to the glue module) says what the first, slow
     model build is doing; a second build does not repeat it."""
-    from exudyn_bearing import compiled as glue
+    from exudyn_bearing.model import compiled as glue
 
     monkeypatch.setattr(glue, "__file__", str(tmp_path / "compiled.py"))
     monkeypatch.setattr(glue, "_ANNOUNCED", [])

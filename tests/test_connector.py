@@ -37,7 +37,7 @@ from contact.ballrace import ContactLaw  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
-from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
+from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.cage import CageModel  # noqa: E402
 
 BRG = REFERENCE_BEARING

@@ -11,7 +11,7 @@ import pytest
 
 pytest.importorskip("exudyn")
 
-from exudyn_bearing.runner import SolverSettings, simulate  # noqa: E402
+from exudyn_bearing.simulation.runner import SolverSettings, simulate  # noqa: E402
 
 KEYS = ("kinematic_cage_slip_percent", "cage_slip_percent", "cage_speed")
 
@@ -67,7 +67,7 @@ def test_solver_settings_reject_bad_values(kwargs, name):
 def test_step_recovery_reaches_exudyn():
     """SolverSettings.step_recovery_iterations is Exudyn's adaptiveStepRecoveryIterations of the
     run (Exudyn's own default is 7)."""
-    from exudyn_bearing.runner import _exudyn_settings
+    from exudyn_bearing.simulation.runner import _exudyn_settings
 
     assert _exudyn_settings(SolverSettings(step=1e-4), 0.01).timeIntegration.adaptiveStepRecoveryIterations == 5
     ss = _exudyn_settings(SolverSettings(step=1e-4, step_recovery_iterations=7), 0.01)

@@ -21,12 +21,12 @@ exu = pytest.importorskip("exudyn")
 
 from contact.ballrace import ContactLaw  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_LUBRICANT  # noqa: E402
-from exudyn_bearing.builder import CreateAngularContactBearing  # noqa: E402
+from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.cage import CageModel  # noqa: E402
 from exudyn_bearing.errors import BearingSimulationError  # noqa: E402
-from exudyn_bearing.quasistatic import QuasiStaticError, solve_load_distribution  # noqa: E402
+from exudyn_bearing.solvers.quasistatic import QuasiStaticError, solve_load_distribution  # noqa: E402
 from exudyn_bearing.races import Driven, Fixed  # noqa: E402
-from exudyn_bearing.runner import SolverSettings, run_solver  # noqa: E402
+from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
 
 B = REFERENCE_BEARING
 RPM = 1800.0

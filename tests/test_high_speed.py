@@ -12,8 +12,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 
 from exudyn_bearing import simulate, steady_state  # noqa: E402
 from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG  # noqa: E402
-from exudyn_bearing.quasistatic import solve_load_distribution  # noqa: E402
-from exudyn_bearing.steprule import orbit_step_limit, recommended_step  # noqa: E402
+from exudyn_bearing.solvers.quasistatic import solve_load_distribution  # noqa: E402
+from exudyn_bearing.model.steprule import orbit_step_limit, recommended_step  # noqa: E402
 from reduced_balance import solve_balance  # noqa: E402
 
 B, OIL, DRAG = HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_DRAG

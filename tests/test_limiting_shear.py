@@ -279,7 +279,7 @@ def test_the_default_law_runs_compiled_and_matches_the_numpy_path():
     forces equal the numpy path's (same state, as tests/test_compiled.py)."""
     exu = pytest.importorskip("exudyn")
     from exudyn_bearing import races
-    from exudyn_bearing.builder import CreateAngularContactBearing
+    from exudyn_bearing.model.builder import CreateAngularContactBearing
 
     forces = []
     for compiled_path in (True, False):
@@ -393,7 +393,9 @@ def test_paper_law_reproduces_the_plain_crook_call_exactly():
 def test_cli_traction_option(command, monkeypatch, tmp_path):
     """--traction on simulate, skid-map and render: default crook-limited, every model
     accepted, the chosen law reaches the run (the run itself is replaced by a stub)."""
-    from exudyn_bearing import cli, graphics, runner, skidmap
+    from exudyn_bearing.studies import cli, skidmap
+    from exudyn_bearing.model import graphics
+    from exudyn_bearing.simulation import runner
 
     seen = []
 

@@ -1,9 +1,9 @@
-"""The damped Newton of the steady and quasi-dynamic solvers (exudyn_bearing/newton.py) on
+"""The damped Newton of the steady and quasi-dynamic solvers (exudyn_bearing/solvers/newton.py) on
 problems with known roots."""
 import numpy as np
 
 from exudyn_bearing.jacobian import forward_jacobian
-from exudyn_bearing.newton import damped_newton
+from exudyn_bearing.solvers.newton import damped_newton
 
 
 def test_line_search_reaches_the_root_where_plain_newton_diverges():

@@ -153,7 +153,7 @@ def test_long_runs_report_progress_on_stderr(monkeypatch, capsys):
     """Issue 16: a run says where it is every PROGRESS_PERIOD s of wall time (here 0: every
     recorded state), on stderr, with the simulated time and the end time; progress=False and
     short runs print nothing."""
-    import exudyn_bearing.runner as runner
+    import exudyn_bearing.simulation.runner as runner
     from exudyn_bearing import SolverSettings
 
     simulate(axial=1300.0, rpm=1800.0, time=0.002)
@@ -171,7 +171,7 @@ def test_a_bug_in_a_user_function_is_not_reported_as_a_solver_failure(monkeypatc
     it (the user-function error with the NameError), not as a BearingSimulationError
     advising a smaller step."""
     from exudyn_bearing.errors import BearingSimulationError
-    from exudyn_bearing.connector import BearingConnector
+    from exudyn_bearing.model.connector import BearingConnector
 
     def broken(self, t, q, q_t):
         raise NameError("name 'x' is not defined")

@@ -1,5 +1,5 @@
 """Newton in the implicit runs (MODEL.md §10b): the constant-acceleration start
-(exudyn_bearing/predictor.py) may change how Newton gets to a step's solution, never the
+(exudyn_bearing/model/predictor.py) may change how Newton gets to a step's solution, never the
 solution; the absolute tolerance follows the force law's resolution."""
 import numpy as np
 import pytest
@@ -8,7 +8,8 @@ exu = pytest.importorskip("exudyn")
 from scipy.spatial.transform import Rotation  # noqa: E402
 
 from exudyn_bearing import CreateAngularContactBearing, SolverSettings, races, run_solver  # noqa: E402
-from exudyn_bearing.predictor import VARIABLE, NewtonPredictor, compose_rotation_vectors, install_predictor  # noqa: E402
+from exudyn_bearing.model.predictor import (VARIABLE, NewtonPredictor, compose_rotation_vectors,  # noqa: E402
+                                                 install_predictor)
 
 
 def test_composition_is_the_rotation_product():

@@ -1,4 +1,4 @@
-"""The quasi-dynamic start under combined load (MODEL.md §12a, exudyn_bearing/quasidynamic.py)
+"""The quasi-dynamic start under combined load (MODEL.md §12a, exudyn_bearing/solvers/quasidynamic.py)
 against the axial steady state (a separate solver) and against the dynamic model."""
 import numpy as np
 import pytest
@@ -6,8 +6,8 @@ import pytest
 pytest.importorskip("exudyn")
 
 from exudyn_bearing import REFERENCE_BEARING as B, REFERENCE_DRAG, REFERENCE_LUBRICANT, simulate, steady_state  # noqa: E402
-from exudyn_bearing.quasidynamic import combined_load_state  # noqa: E402
-from exudyn_bearing.runner import SolverSettings  # noqa: E402
+from exudyn_bearing.solvers.quasidynamic import combined_load_state  # noqa: E402
+from exudyn_bearing.simulation.runner import SolverSettings  # noqa: E402
 
 
 def test_vanishing_radial_load_is_the_axial_steady_state():

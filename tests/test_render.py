@@ -10,7 +10,7 @@ import pytest
 pytest.importorskip("exudyn")
 plt = pytest.importorskip("matplotlib.pyplot")
 
-from exudyn_bearing.graphics import render_run  # noqa: E402
+from exudyn_bearing.studies.render import render_run  # noqa: E402
 
 
 def assert_not_blank(path):
@@ -65,7 +65,7 @@ def test_race_graphics_are_the_modelled_ring(mass):
     import exudyn as exu
 
     from exudyn_bearing import CreateAngularContactBearing, REFERENCE_BEARING, races
-    from exudyn_bearing.graphics import _race_contour
+    from exudyn_bearing.results.graphics import _race_contour
 
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()

@@ -25,8 +25,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 
 from contact.lubricant import Lubricant  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING  # noqa: E402
-from exudyn_bearing.quasistatic import solve_load_distribution  # noqa: E402
-from exudyn_bearing.runner import simulate  # noqa: E402
+from exudyn_bearing.solvers.quasistatic import solve_load_distribution  # noqa: E402
+from exudyn_bearing.simulation.runner import simulate  # noqa: E402
 from reduced_balance import solve_balance  # noqa: E402
 
 pytestmark = pytest.mark.slow

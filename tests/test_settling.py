@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from exudyn_bearing.outputs import BearingResults, settled
+from exudyn_bearing.results.outputs import BearingResults, settled
 
 T = 0.3  # s, run length of the synthetic series
 N = 6001  # samples: 1000 per sixth of the run

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from exudyn_bearing import REFERENCE_BEARING as BRG, solve_load_distribution
-from exudyn_bearing.shaft import ShaftBearing, solve_shaft
+from exudyn_bearing.solvers.shaft import ShaftBearing, solve_shaft
 
 BACK = np.diag([1.0, -1.0, -1.0])
 
@@ -89,7 +89,7 @@ def test_hss_shaft_scene_matches_the_quasi_static_shaft():
     within 0.1 % but one cage drifted 1.9 mm off centre in these 25 ms."""
     exu = pytest.importorskip("exudyn")
     demo = _demo()
-    from exudyn_bearing.runner import SolverSettings, run_solver
+    from exudyn_bearing.simulation.runner import SolverSettings, run_solver
 
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()

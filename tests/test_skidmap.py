@@ -6,9 +6,9 @@ import math
 import pytest
 
 from exudyn_bearing import REFERENCE_BEARING as B
-from exudyn_bearing import skidmap
+from exudyn_bearing.studies import skidmap
 from exudyn_bearing.criteria import hirano_minimum_axial
-from exudyn_bearing.skidmap import SkidMap, SkidPoint, parse_range, skid_map
+from exudyn_bearing.studies.skidmap import SkidMap, SkidPoint, parse_range, skid_map
 
 SHORT = 0.003  # s simulated per point: these tests check the engine, not the physics
 
@@ -61,7 +61,7 @@ def test_local_run_writes_incrementally_and_resumes(tmp_path):
 
 
 def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
-    import exudyn_bearing.runner as sim
+    import exudyn_bearing.simulation.runner as sim
 
     real = sim.simulate
 
@@ -102,7 +102,7 @@ def test_resume_refuses_results_of_other_inputs(tmp_path):
 
     from contact.ballrace import ContactLaw
     from exudyn_bearing import REFERENCE_BEARING
-    from exudyn_bearing.skidmap import _check_inputs
+    from exudyn_bearing.studies.skidmap import _check_inputs
 
     from exudyn_bearing.presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
@@ -155,7 +155,7 @@ def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
     monkeypatch.setattr(skidmap, "FIRST_TIME", 0.002)
     monkeypatch.setattr(skidmap, "MAX_TIME", 0.008)
     lengths = []
-    from exudyn_bearing import runner
+    from exudyn_bearing.simulation import runner
 
     original = runner.simulate
 

@@ -21,8 +21,8 @@ def _compiled(c):
     force, drag = np.empty((1, Z, 3)), np.empty((1, Z, 3))
     zeros = np.zeros((1, 3))
     params = kernels.CageRecord(2, 2 * np.pi * np.arange(Z) / Z, R_P, 0.0, K, 0.0, AXIS, ORIGIN, 0.0)
-    kernels.cage_and_drag(c[None], np.zeros((1, Z, 3)), params, kernels.BodyStates(zeros, np.eye(3)[None], zeros, zeros),
-                          force, drag)
+    cage = kernels.BodyStates(zeros, np.eye(3)[None], zeros, zeros)
+    kernels.cage_and_drag(c[None], np.zeros((1, Z, 3)), params, cage, force, drag)
     return force[0]
 
 

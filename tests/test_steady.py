@@ -1,4 +1,4 @@
-"""The steady rolling state (exudyn_bearing.steady, MODEL.md §12) against numbers it does not
+"""The steady rolling state (exudyn_bearing.solvers.steady, MODEL.md §12) against numbers it does not
 produce: the reduced balance of ``tests/reduced_balance.py`` (its own kinematics, the
 accurate traction rule at order 24), closed-form pure rolling, and the dynamic model, which
 must stay on a steady state it starts from."""

@@ -6,7 +6,7 @@ import warnings
 import numpy as np
 import pytest
 
-from exudyn_bearing.outputs import TractionCoefficientWarning, _traction_coefficient
+from exudyn_bearing.results.outputs import TractionCoefficientWarning, _traction_coefficient
 
 FIELDS = ("load", "traction_rolling", "traction_transverse", "max_pressure")
 
@@ -52,7 +52,7 @@ def test_combined_load_with_the_paper_law_warns():
     the traction coefficient exceeds 0.15 within the first millisecond."""
     pytest.importorskip("exudyn")
     from contact.ballrace import ContactLaw
-    from exudyn_bearing.runner import simulate
+    from exudyn_bearing.simulation.runner import simulate
 
     with pytest.warns(TractionCoefficientWarning):
         run = simulate(axial=2200.0, radial=2000.0, time=0.001, contact_law=ContactLaw(traction="crook"))

@@ -20,9 +20,9 @@ from exudyn_bearing.bearing import BallDrag, Bearing, Material
 from exudyn_bearing.bearingfile import loads_bearing
 from exudyn_bearing.cage import CageModel
 from exudyn_bearing.presets import REFERENCE_BEARING
-from exudyn_bearing.quasistatic import solve_load_distribution
-from exudyn_bearing.shaft import ShaftBearing, solve_shaft
-from exudyn_bearing.skidmap import skid_map
+from exudyn_bearing.solvers.quasistatic import solve_load_distribution
+from exudyn_bearing.solvers.shaft import ShaftBearing, solve_shaft
+from exudyn_bearing.studies.skidmap import skid_map
 
 NAN, INF = float("nan"), float("inf")
 P = functools.partial
@@ -267,7 +267,7 @@ def test_connector_race_frame_names_name(built):
 @pytest.mark.parametrize("time", [0.0, -0.01, NAN, INF])
 def test_simulate_names_time(time):
     pytest.importorskip("exudyn")
-    from exudyn_bearing.runner import simulate
+    from exudyn_bearing.simulation.runner import simulate
 
     with pytest.raises(ValueError, match=r"(?<!\w)time(?!\w)"):
         simulate(time=time)
@@ -276,7 +276,7 @@ def test_simulate_names_time(time):
 @pytest.mark.parametrize("frames", [0, 2.0, "4"])
 def test_render_run_names_frames(frames, tmp_path):
     pytest.importorskip("exudyn")
-    from exudyn_bearing.graphics import render_run
+    from exudyn_bearing.studies.render import render_run
 
     with pytest.raises(ValueError, match=r"(?<!\w)frames(?!\w)"):
         render_run(tmp_path, frames=frames)
@@ -285,7 +285,7 @@ def test_render_run_names_frames(frames, tmp_path):
 
 def test_render_frames_names_backend(tmp_path):
     exu = pytest.importorskip("exudyn")
-    from exudyn_bearing.graphics import render_frames
+    from exudyn_bearing.results.graphics import render_frames
 
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()

@@ -12,8 +12,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["BallStates", "BodyStates", "CageRecord", "ContactOutputs", "CrookTables", "LawRecord", "RaceFrames", "RaceGeometry",
-           "law_record", "traction_record"]
+__all__ = ["BallStates", "BodyStates", "CageRecord", "ContactOutputs", "CrookTables", "LawRecord", "RaceFrames",
+           "RaceGeometry", "law_record", "traction_record"]
 
 
 class RaceGeometry(NamedTuple):

@@ -14,7 +14,7 @@ settles near is reached by continuation in the radial load from the axial steady
 (:func:`exudyn_bearing.steady_state`), in steps of at most a tenth of the axial load
 (docs/DEVELOPMENT.md, 'Start states'); a pure radial load from the steady state at a seed
 axial load, which is then taken back to zero (same section). Each step is solved by Newton's
-method with a line search (:mod:`exudyn_bearing.newton`).
+method with a line search (:mod:`exudyn_bearing.solvers.newton`).
 """
 from __future__ import annotations
 

@@ -25,9 +25,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .races import node_rows
+from ..races import node_rows
 
-__all__ = ["AddBearingGraphics", "annotate_frame", "render_frames", "render_run", "slip_color", "write_animation"]
+__all__ = ["AddBearingGraphics", "annotate_frame", "render_frames", "slip_color", "write_animation"]
 
 
 def slip_color(slip, scale):
@@ -45,7 +45,7 @@ def _race_contour(bearing, which, mass=None, n_arc=24):
     """(axial, radial) contour of a race cross-section with its groove, m, in the race
     frame (groove centre at the bearing-frame position of MODEL.md §2): the modelled ring
     of :func:`exudyn_bearing.races.race_ring_section` (``mass``: the race body's, kg)."""
-    from .races import race_ring_section
+    from ..races import race_ring_section
 
     (ri, zi), (ro, zo) = bearing.groove_centres()
     d = bearing.ball_diameter
@@ -71,7 +71,7 @@ def _race_contour(bearing, which, mass=None, n_arc=24):
 def AddBearingGraphics(mbs, handle, *, races: bool = True, cage: bool = True, contactForces: bool = True,
                        loadZone: bool = True, forceScale: float | None = None, slipScale: float = 0.5):
     """Add renderer graphics of a bearing created by
-    :func:`exudyn_bearing.builder.CreateAngularContactBearing`; returns the ground object.
+    :func:`exudyn_bearing.model.builder.CreateAngularContactBearing`; returns the ground object.
 
     Parameters
     ----------
@@ -266,49 +266,4 @@ def render_frames(SC, mbs, out_dir, *, steps=None, size=(800, 600), backend="aut
     finally:
         if backend == "opengl":
             SC.renderer.Stop()
-    return written
-
-
-def render_run(out_dir, *, axial=1300.0, radial=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto", contact_law=None, bearing=None, lubricant=None, animation=None, cage=None,
-               drag="default"):
-    """Simulate ``bearing`` (default: the reference bearing; ``lubricant`` likewise; inner race
-    driven at ``rpm``, outer race fixed) for
-    ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
-    the run (the CLI's ``render`` command), each labelled with its time and the slip colour
-    scale; ``contact_law`` a :class:`contact.ballrace.ContactLaw` (default: the builder's);
-    ``animation``: also write the frames as an animated GIF to this path; ``cage`` a
-    :class:`~exudyn_bearing.cage.CageModel` and ``drag`` a ball drag (None: none) where
-    not the builder's defaults. Returns the written paths (frames, then the animation)."""
-    import exudyn as exu
-
-    from .builder import CreateAngularContactBearing
-    from .races import Driven, Fixed
-    from .runner import SolverSettings, run_solver
-
-    if not (isinstance(frames, int) and frames >= 1):
-        raise ValueError(f"frames must be a positive integer, got {frames!r}")
-    SC = exu.SystemContainer()
-    mbs = SC.AddSystem()
-    kw = {} if contact_law is None else dict(contactLaw=contact_law)
-    kw.update({k: v for k, v in (("bearing", bearing), ("lubricant", lubricant), ("cage", cage)) if v is not None})
-    if drag != "default":
-        kw["ballDrag"] = drag
-    h = CreateAngularContactBearing(mbs, innerRace=Driven(rpm), outerRace=Fixed(), axialForce=axial,
-                                    radialForce=radial, **kw)
-    AddBearingGraphics(mbs, h)
-    mbs.Assemble()
-    run_solver(mbs, [h], time, SolverSettings())
-    t, q, q_t = h.States(mbs)
-    idx = node_rows(mbs, h.nodeNumbers)
-    n_sys = len(mbs.systemData.GetODE2Coordinates())
-    picks = np.unique(np.linspace(0, len(t) - 1, frames).round().astype(int))
-    states = []
-    for k in picks:
-        qs, vs = np.zeros(n_sys), np.zeros(n_sys)
-        qs[idx], vs[idx] = q[k] - h.connector.reference, q_t[k]
-        states.append((float(t[k]), qs, vs))
-    written = render_frames(SC, mbs, out_dir, steps=states, size=size, backend=backend)
-    if animation is not None:
-        written.append(write_animation(written, animation))
     return written

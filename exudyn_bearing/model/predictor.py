@@ -31,12 +31,12 @@ import math
 import numpy as np
 from numba import njit
 
-from .races import node_rows
+from ..races import node_rows
 
 __all__ = ["NewtonPredictor", "compose_rotation_vectors", "install_predictor"]
 
 #: key of the predictor in ``mbs.variables`` (one per system, shared by its bearings)
-VARIABLE = "exudyn_bearing.predictor"
+VARIABLE = "exudyn_bearing.model.predictor"
 
 
 @njit(cache=True)

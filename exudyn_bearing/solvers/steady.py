@@ -28,13 +28,13 @@ from contact import cage as cage_physics
 from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
-from .bearing import BallDrag, Bearing
+from ..bearing import BallDrag, Bearing
+from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..results.outputs import cage_slip
+from ..results.records import inputs_record, units_of
 from .newton import damped_newton
-from .outputs import cage_slip
-from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .quasistatic import solve_load_distribution
 from .raceway import raceway_control
-from .records import inputs_record, units_of
 
 __all__ = ["SteadyState", "steady_state"]
 
@@ -72,7 +72,7 @@ class SteadyState:
     converged: bool
     message: str
     wall_time_s: float
-    #: what produced it (:func:`exudyn_bearing.records.inputs_record`)
+    #: what produced it (:func:`exudyn_bearing.results.records.inputs_record`)
     inputs: dict = field(default_factory=dict, compare=False)
 
     def to_dict(self) -> dict:

@@ -34,7 +34,7 @@ s) 15 s, 1.8 (1.67e-5 s) 10 s; 72 000 rpm: 7.9 (2.5e-5 s) 42 s with 10 % of the 
 55 000 rpm: 3.75 (2.5e-5 s) 42 s with 5 % cut, 1.7 (1.67e-5 s) 11 s, radial 1.5 11 s. The
 reference bearing at 1800 rpm and 200 N holds 1e-4 s at e/δ_o = 1.7. The step is therefore
 also limited to e <= 2 δ_o (:data:`MAX_ORBIT_PREDICTOR_RATIO`). The package's predicted first
-Newton iterate (:mod:`exudyn_bearing.predictor`, MODEL.md §10b) removes most of e; the rule is
+Newton iterate (:mod:`exudyn_bearing.model.predictor`, MODEL.md §10b) removes most of e; the rule is
 kept as measured with Exudyn's own start.
 """
 from __future__ import annotations
@@ -77,7 +77,7 @@ def recommended_absolute_tolerance(loads) -> float:
 def ball_vibration_frequency(bearing, loads) -> float:
     """Largest ω_n = √((k_i + k_o)/m) over the balls, rad/s, with k = 3Q/(2δ) the linearized
     Hertz stiffness of each loaded contact of the quasi-static ``loads``
-    (:class:`exudyn_bearing.quasistatic.LoadDistribution`); 0 when no ball is loaded."""
+    (:class:`exudyn_bearing.solvers.quasistatic.LoadDistribution`); 0 when no ball is loaded."""
     def stiffness(load, deflection):
         load, deflection = np.asarray(load, dtype=float), np.asarray(deflection, dtype=float)
         safe = np.where(deflection > 0, deflection, 1.0)

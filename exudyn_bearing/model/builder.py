@@ -11,7 +11,7 @@ Example (importing the package registers ``mbs.CreateAngularContactBearing`` on 
     SC = exu.SystemContainer(); mbs = SC.AddSystem()
     brg = mbs.CreateAngularContactBearing(innerRace=races.Driven(rpm=1800), axialForce=1300)
     mbs.Assemble()
-    ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.runner
+    ...  # exu.SolveDynamic(mbs, settings) or exudyn_bearing.simulation.runner
     res = brg.Results(mbs)
     res.cage_slip_percent, res.kinematic_cage_slip_percent
 """
@@ -24,17 +24,17 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
-from .bearing import BallDrag, Bearing
-from .records import inputs_record
+from ..bearing import BallDrag, Bearing
+from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_rows, node_state,
+                     race_adapter, ring_inertia)
+from ..results.records import inputs_record
+from ..solvers.quasidynamic import AzimuthStates
+from ..solvers.quasistatic import solve_load_distribution
+from ..solvers.raceway import choose_inner_control, jones_axis_start, raceway_control
+from ..solvers.start import steady_start
 from .connector import BearingConnector, CageModel
-from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
-from .quasistatic import solve_load_distribution
-from .races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_rows, node_state,
-                    race_adapter, ring_inertia)
 from .predictor import install_predictor
-from .quasidynamic import AzimuthStates
-from .raceway import choose_inner_control, jones_axis_start, raceway_control
-from .start import steady_start
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
@@ -61,16 +61,16 @@ class BearingHandle:
     connector: BearingConnector = field(repr=False)
     nodeNumbers: list = field(repr=False, default_factory=list)
     initialLoads: object = field(repr=False, default=None)
-    #: the :class:`~exudyn_bearing.steady.SteadyState` the run starts from, or None (pure-rolling start)
+    #: the :class:`~exudyn_bearing.solvers.steady.SteadyState` the run starts from, or None (pure-rolling start)
     initialSteadyState: object = field(repr=False, default=None)
-    #: under combined load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` the run
+    #: under combined load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` the run
     #: starts from, or None
     initialQuasiDynamicState: object = field(repr=False, default=None)
 
     def Inputs(self, **settings) -> dict:
         """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,
         races, package version, and ``settings`` given here), for a result file
-        (:func:`exudyn_bearing.records.inputs_record`)."""
+        (:func:`exudyn_bearing.results.records.inputs_record`)."""
         con = self.connector
         return inputs_record(self.bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
                              cage=con.cage, races=con.races, **settings)
@@ -88,7 +88,7 @@ class BearingHandle:
 
     def RecommendedStep(self) -> float:
         """The time step this bearing needs at its start state, s: 1e-4 s, or less for small
-        balls at high contact stiffness (:func:`exudyn_bearing.steprule.recommended_step`).
+        balls at high contact stiffness (:func:`exudyn_bearing.model.steprule.recommended_step`).
         ``run_solver`` uses the smallest over its bearings unless a step is given."""
         from .steprule import NOMINAL_STEP, recommended_step
 
@@ -97,7 +97,7 @@ class BearingHandle:
     def RecommendedAbsoluteTolerance(self) -> float:
         """Newton's absolute tolerance for this bearing, N: 3e-5 of its largest contact load
         at the start state, the resolution of the compiled traction rule (MODEL.md §10b;
-        :func:`exudyn_bearing.steprule.recommended_absolute_tolerance`). ``run_solver`` uses
+        :func:`exudyn_bearing.model.steprule.recommended_absolute_tolerance`). ``run_solver`` uses
         the smallest over its bearings unless one is given; for ``exu.SolveDynamic`` set
         ``timeIntegration.newton.absoluteTolerance`` to it."""
         from .steprule import MIN_ABSOLUTE_TOLERANCE, recommended_absolute_tolerance
@@ -115,7 +115,7 @@ class BearingHandle:
         ``mbs.Assemble()``. The write period is ``simulationSettings.solution.sensors.writePeriod``."""
         from exudyn.utilities import SensorUserFunction
 
-        from .outputs import compute_results
+        from ..results.outputs import compute_results
 
         unknown = [o for o in outputs if o not in SENSOR_OUTPUTS]
         if unknown or not outputs:
@@ -148,8 +148,8 @@ class BearingHandle:
         return sensors
 
     def Results(self, mbs, stride: int = 1):
-        """Bearing outputs per recorded step (:class:`exudyn_bearing.outputs.BearingResults`)."""
-        from .outputs import compute_results
+        """Bearing outputs per recorded step (:class:`exudyn_bearing.results.outputs.BearingResults`)."""
+        from ..results.outputs import compute_results
 
         t, q, q_t = self.States(mbs)
         return compute_results(self, t[::stride], q[::stride], q_t[::stride])
@@ -220,7 +220,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     initialControl : {'auto', 'inner', 'outer'}
         Pure-rolling start: 'inner'/'outer' is raceway control (Jones) by that contact —
         each ball's absolute spin axis solved for zero spin there and zero rolling slip at
-        both contacts (:func:`exudyn_bearing.raceway.raceway_control`); 'auto' takes Jones' angle of the contact
+        both contacts (:func:`exudyn_bearing.solvers.raceway.raceway_control`); 'auto' takes Jones' angle of the contact
         with the larger Newtonian spin resistance as the absolute axis (see
         ``raceway.jones_axis_start``: measured to start combined loads with the fewest step cuts).
     initialState : {'auto', 'steady', 'rolling'}
@@ -230,7 +230,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
         §12), so a run does not spend seconds of simulated time settling; under combined
         or radial load, every ball in its own quasi-dynamic balance at one cage
         speed, each where its pocket carries that balance's circumferential force
-        (:func:`exudyn_bearing.quasidynamic.combined_load_state`, MODEL.md §12a; ~0.2–1.5 s
+        (:func:`exudyn_bearing.solvers.quasidynamic.combined_load_state`, MODEL.md §12a; ~0.2–1.5 s
         to solve, after which the run holds its cage speed instead of drifting for seconds).
         'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
         (default): 'steady' where it applies (``Driven``/``Free`` inner race, no

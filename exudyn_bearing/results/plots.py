@@ -1,6 +1,6 @@
 """Plots of a bearing run in the style of the paper's figures 5 and 6 (``plot`` extra).
 
-:func:`plot_run` takes the :class:`~exudyn_bearing.outputs.BearingResults` of any run
+:func:`plot_run` takes the :class:`~exudyn_bearing.results.outputs.BearingResults` of any run
 (``handle.Results(mbs)``, ``simulate(...).results``); :func:`plot_skid_curve` a load
 sweep. Both return the matplotlib figure and, given a path, save it as PNG. Matplotlib is
 imported on call only (headless ``Agg`` backend when saving), so the rest of the package

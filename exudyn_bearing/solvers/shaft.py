@@ -3,7 +3,7 @@
 A preloaded pair is statically indeterminate: the shaft's 5 degrees of freedom (three
 translations, two tilts; the spin about its axis is free) are found from the balance of
 the applied load with every bearing's nonlinear load–displacement relation, each bearing
-solved with :func:`exudyn_bearing.quasistatic.solve_load_distribution` (geometric mode:
+solved with :func:`exudyn_bearing.solvers.quasistatic.solve_load_distribution` (geometric mode:
 displaced groove centres, Hertz balls, centrifugal force at the running speed) for the
 displacement and tilt its inner race gets from the shaft.
 
@@ -20,8 +20,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bearing import Bearing
-from .jacobian import central_jacobian
+from ..bearing import Bearing
+from ..jacobian import central_jacobian
 from .quasistatic import QuasiStaticError, _rotation, solve_load_distribution
 
 __all__ = ["ShaftBearing", "ShaftEquilibrium", "solve_shaft"]

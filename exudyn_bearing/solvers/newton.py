@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .jacobian.differences import forward_jacobian
+from ..jacobian.differences import forward_jacobian
 
 __all__ = ["damped_newton"]
 

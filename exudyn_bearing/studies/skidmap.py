@@ -1,7 +1,7 @@
 """Skid-risk map: the dynamic model over a grid of axial load, radial load and speed
 (MODEL.md §7, §9), run in parallel local processes or on a Dask cluster.
 
-Each grid point is one :func:`exudyn_bearing.runner.simulate` run. Results are
+Each grid point is one :func:`exudyn_bearing.simulation.runner.simulate` run. Results are
 appended to ``points.jsonl`` as they arrive, so an interrupted map keeps what it has
 and a second call with the same ``out`` directory resumes.
 """
@@ -22,13 +22,13 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
-from .bearing import BallDrag, Bearing
-from .cage import CageModel
-from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
-from .outputs import settled_label
-from .records import inputs_record, units_of
-from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
-from .steady import steady_state
+from ..bearing import BallDrag, Bearing
+from ..cage import CageModel
+from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
+from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..results.outputs import settled_label
+from ..results.records import inputs_record, units_of
+from ..solvers.steady import steady_state
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
 
@@ -90,7 +90,7 @@ def _run_point(args) -> dict:
     point, bearing, lubricant, drag, law, cage = args
     start = _time.perf_counter()
     try:
-        from .runner import SolverSettings, simulate
+        from ..simulation.runner import SolverSettings, simulate
 
         # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
         # (each run from scratch: at most twice the cost of the final one)
@@ -126,7 +126,7 @@ class SkidMap:
     refined: list | None = None
     #: names of the files :func:`skid_map` wrote into ``out``
     files: list = field(default_factory=list)
-    #: what produced the map (:func:`exudyn_bearing.records.inputs_record`), set by :func:`skid_map`
+    #: what produced the map (:func:`exudyn_bearing.results.records.inputs_record`), set by :func:`skid_map`
     inputs: dict | None = None
 
     def thresholds(self, level: float = 1.0) -> list[dict]:
@@ -197,7 +197,7 @@ class SkidMap:
             refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi],
                            note=f"steady-state bisection to ±{100 * (hi - lo) / (hi + lo):.1f} %")
             if confirm_time:
-                from .runner import simulate
+                from ..simulation.runner import simulate
 
                 dyn = [simulate(self.bearing, lubricant, axial=a, rpm=entry["rpm"], time=confirm_time, drag=drag,
                                 contact_law=contact_law, cage=cage).kinematic_cage_slip_percent for a in (lo, hi)]

@@ -28,10 +28,10 @@ import numpy as np
 
 from contact import geometry
 from contact.hertz import effective_ball_stiffness
-from .bearing import Bearing
-from .errors import QuasiStaticError
-from .jacobian.differences import central_jacobian
-from .records import units_of
+from ..bearing import Bearing
+from ..errors import QuasiStaticError
+from ..jacobian.differences import central_jacobian
+from ..results.records import units_of
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
 

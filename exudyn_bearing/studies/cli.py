@@ -12,9 +12,9 @@ import numpy as np
 
 from contact.ballrace import TRACTION_MODELS
 from contact.ballrace import ContactLaw as ContactLawDefaults
-from .bearingfile import BearingFile, load_bearing
-from .records import assumptions_line, assumptions_record
-from .presets import REFERENCE_BEARING
+from ..bearingfile import BearingFile, load_bearing
+from ..presets import REFERENCE_BEARING
+from ..results.records import assumptions_line, assumptions_record
 
 
 def _setup(path) -> BearingFile:
@@ -27,7 +27,7 @@ def _setup(path) -> BearingFile:
 
 
 def _loads(args) -> int:
-    from .quasistatic import solve_load_distribution
+    from ..solvers.quasistatic import solve_load_distribution
 
     setup = _setup(args.bearing)
     result = solve_load_distribution(
@@ -36,7 +36,7 @@ def _loads(args) -> int:
         mode="fixed-angle" if args.fixed_angle else "geometric", hold_axial=args.hold_axial,
         hertz_method="exact" if args.exact_hertz else "fit")
     if args.json:
-        from .records import inputs_record
+        from ..results.records import inputs_record
 
         data = result.to_dict() | {"inputs": inputs_record(
             setup.bearing, mode=result.mode, hold_axial=args.hold_axial, exact_hertz=args.exact_hertz)}
@@ -64,7 +64,7 @@ def _loads(args) -> int:
 
 
 def _simulate(args) -> int:
-    from .runner import SolverSettings, simulate
+    from ..simulation.runner import SolverSettings, simulate
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
@@ -83,7 +83,7 @@ def _simulate(args) -> int:
                        error_estimate=args.error_estimate, initial_state=args.start)
     data = summary.to_dict()
     if args.plot:
-        from .plots import plot_run
+        from ..results.plots import plot_run
 
         plot_run(summary.results, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm")
         data["plot"] = str(args.plot)
@@ -124,9 +124,9 @@ def _simulate(args) -> int:
 
 
 def _steady(args) -> int:
-    from .records import units_of
-    from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
-    from .steady import steady_state
+    from ..results.records import units_of
+    from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
+    from ..solvers.steady import steady_state
 
     if args.radial != 0:
         raise ValueError(f"--radial {args.radial:g}: steady solves the pure axial load (MODEL.md §12); for a combined "
@@ -205,7 +205,7 @@ def _skid_map(args) -> int:
 
 
 def _render(args) -> int:
-    from .graphics import render_run
+    from .render import render_run
 
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
@@ -307,7 +307,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print JSON instead of a table")
     p.set_defaults(func=_loads)
 
-    from .runner import SOLVERS
+    from ..simulation.runner import SOLVERS
 
     p = sub.add_parser("simulate", help="dynamic Exudyn run of one bearing (MODEL.md §1–§7)")
     p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)

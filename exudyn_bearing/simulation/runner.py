@@ -11,13 +11,13 @@ from dataclasses import asdict, dataclass, field, replace
 import numpy as np
 
 from contact.ballrace import ContactLaw
-from .bearing import BallDrag, Bearing
-from .cage import CageModel
-from .errors import BearingSimulationError
-from .presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
-from .predictor import VARIABLE as PREDICTOR_VARIABLE
-from .races import node_rows
-from .records import assumptions_record, inputs_record, units_of
+from ..bearing import BallDrag, Bearing
+from ..cage import CageModel
+from ..errors import BearingSimulationError
+from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
+from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..races import node_rows
+from ..results.records import assumptions_record, inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -36,7 +36,7 @@ class SolverSettings:
         fixed step, or adaptive DOPRI5 (``step`` is the initial/maximum step).
     step : float or None
         Time step, s. None (default): each bearing's ``RecommendedStep()`` (1e-4 s, less for
-        small balls at high contact stiffness; :mod:`exudyn_bearing.steprule`), the smallest.
+        small balls at high contact stiffness; :mod:`exudyn_bearing.model.steprule`), the smallest.
     spectral_radius : float
         rho_inf of generalized-alpha. 0.5 by default: with 0.8 a pure-axial 1 kN run grows a
         spurious radial oscillation of the free inner race from ~0.2 s (ball orbital speeds
@@ -67,7 +67,7 @@ class SolverSettings:
         its start transient (2x its steps); docs/DEVELOPMENT.md, 'Solver defaults and the step rule'.
     predictor : bool
         Implicit solvers: start each step's Newton iteration from the previous step's
-        acceleration of the bearings' nodes (:mod:`exudyn_bearing.predictor`, MODEL.md §10b)
+        acceleration of the bearings' nodes (:mod:`exudyn_bearing.model.predictor`, MODEL.md §10b)
         instead of Exudyn's zero acceleration. Same convergence test, fewer iterations.
     progress : bool
         Print where a run is (simulated time, wall time, time to go) to stderr every
@@ -111,7 +111,7 @@ class SolverSettings:
         """These settings with ``step`` None replaced by the smallest ``RecommendedStep()``
         of the bearing ``handles`` (1e-4 s without any), and ``absolute_tolerance`` None by
         the smallest ``RecommendedAbsoluteTolerance()`` (implicit solvers; else 1e-6)."""
-        from .steprule import MIN_ABSOLUTE_TOLERANCE, NOMINAL_STEP
+        from ..model.steprule import MIN_ABSOLUTE_TOLERANCE, NOMINAL_STEP
 
         settings = self
         if settings.step is None:
@@ -361,20 +361,20 @@ class SimulationSummary:
     details: dict = field(default_factory=dict)
     error_estimate: dict | None = None
     results: object = field(default=None, repr=False)
-    #: the :class:`~exudyn_bearing.steady.SteadyState` the run started from, or None
+    #: the :class:`~exudyn_bearing.solvers.steady.SteadyState` the run started from, or None
     initial_steady_state: object = field(default=None, repr=False)
     #: mean power loss over the summary window by source and 'total', W (MODEL.md §11)
     power_loss_W: dict = field(default_factory=dict)
     #: mean power the races put into the balls, W (equals the total loss when settled)
     drive_power_W: float | None = None
 
-    #: what produced it (:func:`exudyn_bearing.records.inputs_record`)
+    #: what produced it (:func:`exudyn_bearing.results.records.inputs_record`)
     inputs: dict = field(default_factory=dict)
     #: CPU time of the run, all threads, s (the contact kernels run on numba's threads, so
     #: wall_time_s can be below it)
     cpu_time_s: float | None = None
     #: the physics choices behind the numbers: drag oil fraction, rolling resistance, thermal
-    #: film, traction law (:func:`exudyn_bearing.records.assumptions_record`)
+    #: film, traction law (:func:`exudyn_bearing.results.records.assumptions_record`)
     assumptions: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
@@ -401,8 +401,8 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     """
     import exudyn as exu
 
-    from .builder import CreateAngularContactBearing
-    from .races import Driven, Fixed
+    from ..model.builder import CreateAngularContactBearing
+    from ..races import Driven, Fixed
 
     if not (math.isfinite(time) and time > 0):
         raise ValueError(f"time must be positive, got {time!r}")

@@ -1,6 +1,6 @@
 """The state a bearing starts from (MODEL.md §7, §12, §12a): the steady rolling state under
 axial load, the quasi-dynamic state under combined or radial load, or None for pure rolling
-with raceway control (:mod:`exudyn_bearing.raceway`)."""
+with raceway control (:mod:`exudyn_bearing.solvers.raceway`)."""
 from __future__ import annotations
 
 from .quasidynamic import combined_load_state, seed_axial_load
@@ -20,8 +20,8 @@ AUTO_CONTINUATION_STEPS = 40
 
 def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
                  contactLaw, ballDrag, cage=None):
-    """The settled state to start from: the :class:`~exudyn_bearing.steady.SteadyState` for a
-    pure axial load, the :class:`~exudyn_bearing.quasidynamic.AzimuthStates` under combined
+    """The settled state to start from: the :class:`~exudyn_bearing.solvers.steady.SteadyState` for a
+    pure axial load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` under combined
     or pure radial load (continued from the axial steady state, or from that at a seed axial
     load; 'auto' gives it :data:`AUTO_CONTINUATION_STEPS` steps), or None for the
     pure-rolling start ('rolling', or 'auto' where neither applies or converges). Loads given as functions of time start

@@ -15,10 +15,10 @@ from contact import cage as cage_physics
 from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
-from .bearing import BallDrag, Bearing
-from .cage import CageModel
-from .jacobian import block_jacobian
-from .races import Race
+from ..bearing import BallDrag, Bearing
+from ..cage import CageModel
+from ..jacobian import block_jacobian
+from ..races import Race
 
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
 
@@ -265,7 +265,7 @@ class BearingConnector:
         forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
         from the compiled path, which is used unless ``details`` are asked for).
         ``same_contacts`` (compiled path): bool (B,) or (B, 2), states (per race) whose
-        ball–race contacts equal state 0's (see :class:`exudyn_bearing.compiled.CompiledForces`).
+        ball–race contacts equal state 0's (see :class:`exudyn_bearing.model.compiled.CompiledForces`).
         ``raw_reactions``: a dict with ``slots``, which receives ``react`` of those slots
         (B, Z, len(slots), 6) before the held components are zeroed (the block Jacobian's
         race columns need the contact moments a held race does not take)."""
@@ -480,7 +480,7 @@ class BearingConnector:
         quasi-static load distribution (MODEL.md §4) for them, its heaviest ball load and
         p_max against :attr:`overload_pressure` and its elastic approach against
         :attr:`max_penetration`. Empty where no forces are applied through the bearing."""
-        from .quasistatic import QuasiStaticError, solve_load_distribution
+        from ..solvers.quasistatic import QuasiStaticError, solve_load_distribution
 
         force = self.rotation.T @ np.asarray(self.applied_force(t), dtype=float)
         axial, radial = float(force[2]), float(np.hypot(force[0], force[1]))

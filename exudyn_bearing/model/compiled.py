@@ -338,7 +338,8 @@ class CompiledForces:
         for slot, what in con.held.items():
             held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
         self.mount = Mount(self.balls, self.slots, int(self.cage_slot), self.local_pos, self.local_rot,
-                           np.ascontiguousarray(con.origin, dtype=float), np.ascontiguousarray(con.rotation, dtype=float),
+                           np.ascontiguousarray(con.origin, dtype=float),
+                           np.ascontiguousarray(con.rotation, dtype=float),
                            held)
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._mount_tuple = tuple(self.mount)

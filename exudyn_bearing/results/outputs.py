@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contact.kinematics import cross, rolling_cage_speed
-from .errors import TractionCoefficientWarning
+from ..errors import TractionCoefficientWarning
 
 __all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "settled_label", "MINIMUM_JUDGING_TIME",
            "TRACTION_COEFFICIENT_LIMIT",

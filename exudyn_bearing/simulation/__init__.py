@@ -1,0 +1,1 @@
+"""Running Exudyn's solver on a scene with bearings: ``simulate`` and ``run_solver``."""
