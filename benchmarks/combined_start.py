@@ -34,8 +34,8 @@ def main():
     print("| bearing | F_a (N) | F_r (N) | rpm | axial-only kinematic slip (%) | quasi-dynamic solve (s) | cage speed (rad/s) |")
     print("|---|---:|---:|---:|---:|---:|---:|")
     for name, b, lub, drag, axial, radial, rpm in SOLVES:
-        st = steady_state(b, lub, axial=axial, rpm=rpm, drag=drag)
-        state = combined_load_state(b, lub, axial=axial, radial=radial, rpm=rpm, drag=drag, steady=st)
+        st = steady_state(b, lub, axial_force=axial, rpm=rpm, ball_drag=drag)
+        state = combined_load_state(b, lub, axial_force=axial, radial_force=radial, rpm=rpm, ball_drag=drag, steady=st)
         print(f"| {name} | {axial:g} | {radial:g} | {rpm:g} | {st.kinematic_cage_slip_percent:.2f} | "
               f"{state.wall_time_s:.2f} | {state.cage_speed:.3f}{'' if state.converged else ' (' + state.message + ')'} |")
     marks = [m for m in MARKS if m <= args.time + 1e-9]
@@ -44,7 +44,7 @@ def main():
     for axial in (float(a) for a in args.axial.split(",")):
         for start in ("auto", "rolling"):
             t0 = time.perf_counter()
-            run = simulate(axial=axial, radial=args.radial, rpm=1800.0, time=args.time, initial_state=start,
+            run = simulate(axial_force=axial, radial_force=args.radial, rpm=1800.0, time=args.time, initial_state=start,
                            settings=SolverSettings(progress=False))
             wall = time.perf_counter() - t0
             t, k = run.results.time, run.results.kinematic_cage_slip_percent

@@ -74,7 +74,8 @@ def palmgren_torque(n, nu, dm, fa, c0, f0):
 
 def run(rpm, sim_time):
     start = time.perf_counter()
-    r = simulate(SPINDLE_40MM_BEARING, ESTER_TURBINE_OIL, axial=AXIAL, rpm=rpm, time=sim_time, drag=HIGH_SPEED_DRAG,
+    r = simulate(SPINDLE_40MM_BEARING, ESTER_TURBINE_OIL, axial_force=AXIAL, rpm=rpm, time=sim_time,
+                 ball_drag=HIGH_SPEED_DRAG,
                  contact_law=LAW)
     w = rpm * math.pi / 30.0
     model = {k: 1e3 * v / w for k, v in r.power_loss_W.items()}  # N mm

@@ -24,7 +24,7 @@ GRID = (400.0, 700.0, 1000.0, 1400.0, 2000.0, 2800.0, 4000.0, 5600.0)
 
 
 def slip(oil, law, axial, rpm):
-    s = steady_state(lubricant=oil, axial=axial, rpm=rpm, contact_law=law)
+    s = steady_state(lubricant=oil, axial_force=axial, rpm=rpm, contact_law=law)
     if not s.converged:
         raise RuntimeError(f"no steady state at {axial} N, {rpm} rpm: {s.message}")
     return s.kinematic_cage_slip_percent

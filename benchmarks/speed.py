@@ -95,14 +95,14 @@ def _high_speed():
     """The 35-mm high-speed bearing with its ester oil and 0.5 % oil-air drag (issue 19, MODEL.md §11)."""
     from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG
 
-    return dict(bearing=HIGH_SPEED_35MM_BEARING, lubricant=ESTER_TURBINE_OIL, drag=HIGH_SPEED_DRAG)
+    return dict(bearing=HIGH_SPEED_35MM_BEARING, lubricant=ESTER_TURBINE_OIL, ball_drag=HIGH_SPEED_DRAG)
 
 
 def _spindle_40mm():
     """The 40-mm spindle bearing with the same oil and drag (issue 19)."""
     from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, SPINDLE_40MM_BEARING
 
-    return dict(bearing=SPINDLE_40MM_BEARING, lubricant=ESTER_TURBINE_OIL, drag=HIGH_SPEED_DRAG)
+    return dict(bearing=SPINDLE_40MM_BEARING, lubricant=ESTER_TURBINE_OIL, ball_drag=HIGH_SPEED_DRAG)
 
 
 #: name: (description, factory of simulate() keywords — or of a Bearing — or None for the
@@ -132,7 +132,7 @@ def matrix(sim_time, names, law=None, settings=None):
 
     # a process's first run pays one-time costs (numba's thread pool, first dispatches):
     # 0.3-0.4 s on case (a), which would flatter every ratio to it
-    simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
+    simulate(axial_force=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
     rows, wall_a, cpu_a = [], None, None
     for name in names:
         text, factory, axial, radial, rpm = MATRIX[name]
@@ -144,7 +144,7 @@ def matrix(sim_time, names, law=None, settings=None):
             kw["settings"] = settings
         start = time.perf_counter()
         try:
-            run = simulate(axial=axial, radial=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
+            run = simulate(axial_force=axial, radial_force=radial, rpm=rpm, time=sim_time, error_estimate=True, **kw)
         except Exception as err:  # noqa: BLE001 - a failing case is a row of the table
             rows.append(f"| {name} | {text} | fails after {time.perf_counter() - start:.1f} s: "
                         f"{str(err)[:160]} | | | | | | | | |")

@@ -29,7 +29,7 @@ from contact.ballrace import ContactLaw
 from exudyn_bearing.errors import BearingSimulationError
 from exudyn_bearing.simulation.runner import SolverSettings, simulate
 
-CASES = {"a": dict(axial=1300.0, radial=0.0), "b": dict(axial=2200.0, radial=2000.0)}
+CASES = {"a": dict(axial_force=1300.0, radial_force=0.0), "b": dict(axial_force=2200.0, radial_force=2000.0)}
 QUANTITIES = ("cage_slip_pp", "kinematic_cage_slip_pp", "ball_spin_rad_s", "peak_load_n")
 
 
@@ -111,7 +111,7 @@ def run_case(case: str, sim_time: float, log) -> dict:
 def markdown(results: list[dict]) -> str:
     lines = []
     for r in results:
-        lines += [f"### Case ({r['case']}): F_a {r['axial']:g} N, F_r {r['radial']:g} N, 1800 rpm, "
+        lines += [f"### Case ({r['case']}): F_a {r['axial_force']:g} N, F_r {r['radial_force']:g} N, 1800 rpm, "
                   f"{r['time']:g} s simulated", "",
                   f"Reference: {r['reference']['solver']} step {r['reference']['step']:g} s; its own error "
                   f"(vs the next coarser reference run): "
@@ -153,7 +153,7 @@ def plot(results: list[dict], path: Path) -> None:
             ax.loglog(*zip(*pts), "o-", label=label)
         ax.axhline(0.1, color="k", ls=":", lw=1)
         ax.set(xlabel="wall time per 0.1 s simulated (s)", ylabel="kinematic cage slip error (pp)",
-               title=f"case ({r['case']}): F_a {r['axial']:g} N, F_r {r['radial']:g} N")
+               title=f"case ({r['case']}): F_a {r['axial_force']:g} N, F_r {r['radial_force']:g} N")
         ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=120)

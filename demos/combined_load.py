@@ -37,7 +37,7 @@ def main():
     mbs.Assemble()
     info = run_solver(mbs, [bearing], args.time, SolverSettings(output_step=2.5e-4))
     res = bearing.Results(mbs)
-    qs = solve_load_distribution(REFERENCE_BEARING, axial=2200, radial=2000, rpm=1800)
+    qs = solve_load_distribution(REFERENCE_BEARING, axial_force=2200, radial_force=2000, rpm=1800)
 
     last = res.last(0.5)  # after the start transient
     loads = res.inner["load"][last]
@@ -48,7 +48,7 @@ def main():
     # the quasi-static centrifugal force at the cage speed the run actually had (the nominal
     # P19 speed is several % off once the contact angles differ)
     cage = float(np.mean(res.cage_speed[last]))
-    qs_run = solve_load_distribution(REFERENCE_BEARING, axial=2200, radial=2000, rpm=1800, cage_speed=cage)
+    qs_run = solve_load_distribution(REFERENCE_BEARING, axial_force=2200, radial_force=2000, rpm=1800, cage_speed=cage)
     print(f"peak inner-contact load (time mean of the largest ball load, last half) {peak:.1f} N vs quasi-static "
           f"{qs.inner_load.max():.1f} N at 1800 rpm ({100 * (peak / qs.inner_load.max() - 1):+.1f} %); quasi-static "
           f"minimum {qs.inner_load.min():.1f} N")

@@ -32,7 +32,8 @@ SOURCES = ("traction", "rolling_resistance", "ball_drag", "cage", "contact_dampi
 def run(rpm, sim_time):
     """One speed: a row of the table."""
     start = time.perf_counter()
-    r = simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial=AXIAL, rpm=rpm, time=sim_time, drag=HIGH_SPEED_DRAG,
+    r = simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial_force=AXIAL, rpm=rpm, time=sim_time,
+                 ball_drag=HIGH_SPEED_DRAG,
                  contact_law=LAW, cage=CAGE)
     steady = r.initial_steady_state
     row = {"rpm": rpm, "dn_million": 35.0 * rpm / 1e6, "kinematic_cage_slip_percent": r.kinematic_cage_slip_percent,

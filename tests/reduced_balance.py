@@ -157,7 +157,7 @@ def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density,
     cage_speed = None
     x = None
     for _ in range(40):
-        loads = solve_load_distribution(bearing, axial=axial, rpm=rpm, cage_speed=cage_speed)
+        loads = solve_load_distribution(bearing, axial_force=axial, rpm=rpm, cage_speed=cage_speed)
         position = [float(loads.ball_radius_offset[0]) / MICRON, float(loads.ball_axial_offset[0]) / MICRON,
                     float(loads.displacement[2]) / MICRON]
         if x is None:

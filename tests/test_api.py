@@ -37,3 +37,35 @@ def test_the_installed_command_is_the_cli():
                           "from exudyn_bearing.studies.cli import main; sys.exit(main(['--help']))"],
                          capture_output=True, text=True, timeout=120)
     assert out.returncode == 0 and out.stdout.startswith("usage: exudyn-bearing")
+
+
+def _snake(name):
+    return "".join("_" + c.lower() if c.isupper() else c for c in name)
+
+
+def test_one_name_per_input_across_the_builder_and_the_functions():
+    """Every input of simulate and the solvers that the builder also takes has the builder's
+    words in snake_case (axialForce / axial_force, ballDrag / ball_drag, contactLaw /
+    contact_law, initialState / initial_state)."""
+    import inspect
+
+    builder = {_snake(p): p for p in inspect.signature(exudyn_bearing.CreateAngularContactBearing).parameters}
+    same_input = {"axial_force", "radial_force", "ball_drag", "contact_law", "initial_state", "cage", "bearing",
+                  "lubricant"}
+    assert same_input <= set(builder)
+    old_words = {"axial", "radial", "drag", "law", "contactLaw", "ballDrag"}
+    for func in (exudyn_bearing.simulate, exudyn_bearing.steady_state, exudyn_bearing.combined_load_state,
+                 exudyn_bearing.skid_map, exudyn_bearing.solve_load_distribution):
+        params = set(inspect.signature(func).parameters)
+        assert not params & old_words, (func.__name__, params & old_words)
+
+
+def test_an_old_input_name_still_works_with_a_warning():
+    from exudyn_bearing import REFERENCE_BEARING
+
+    new = exudyn_bearing.solve_load_distribution(REFERENCE_BEARING, axial_force=1300.0)
+    with pytest.warns(FutureWarning, match="axial_force"):
+        old = exudyn_bearing.solve_load_distribution(REFERENCE_BEARING, axial=1300.0)
+    assert old.inner_load.tolist() == new.inner_load.tolist()
+    with pytest.raises(TypeError, match="axial= and axial_force="):
+        exudyn_bearing.solve_load_distribution(REFERENCE_BEARING, axial=1.0, axial_force=1.0)

@@ -164,7 +164,7 @@ def test_simulate_error_estimate_is_the_half_step_difference(reference_run, tmp_
     # predicted Newton start (MODEL.md §10b) 7.5e-4 rad/s against the step's 8e-4)
     from exudyn_bearing import SolverSettings, simulate
 
-    half = simulate(axial=1300, rpm=1800, time=0.005, settings=SolverSettings(
+    half = simulate(axial_force=1300, rpm=1800, time=0.005, settings=SolverSettings(
         progress=False, step=5e-5, relative_tolerance=5e-5, absolute_tolerance=5e-7, output_step=5e-4))
     assert abs(half.steps - 100) <= 3
     for key in ("cage_speed", "kinematic_cage_slip_percent", "cage_slip_percent"):
@@ -309,8 +309,8 @@ def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
     assert 1300 <= lo < threshold["minimum_axial"] < hi <= 3000 and hi - lo <= 0.04 * lo + 1e-9
     from exudyn_bearing import steady_state
 
-    assert steady_state(axial=lo, rpm=1800).kinematic_cage_slip_percent >= 1.0
-    assert steady_state(axial=hi, rpm=1800).kinematic_cage_slip_percent < 1.0
+    assert steady_state(axial_force=lo, rpm=1800).kinematic_cage_slip_percent >= 1.0
+    assert steady_state(axial_force=hi, rpm=1800).kinematic_cage_slip_percent < 1.0
     assert threshold["dynamic_confirms"]
     assert abs(threshold["dynamic_minimum_axial"] - threshold["minimum_axial"]) <= 0.04 * lo
     assert "bisection" in threshold["note"]
@@ -384,7 +384,7 @@ def test_plot_run_and_plot_skid_curve(reference_run, tmp_path):
     from exudyn_bearing.results.plots import plot_run, plot_skid_curve
     from exudyn_bearing.simulation.runner import simulate
 
-    run = simulate(axial=1300.0, rpm=1800.0, time=0.003)
+    run = simulate(axial_force=1300.0, rpm=1800.0, time=0.003)
     fig = plot_run(run.results, tmp_path / "run.png", title="F_a 1300 N")
     try:
         assert len(fig.axes) == 6
@@ -580,7 +580,7 @@ def test_short_runs_are_too_short_to_judge_not_drifting(reference_run, tmp_path)
     assert "too short to judge" in proc.stdout and "still drifting" not in proc.stdout
     from exudyn_bearing import settled_label, simulate
 
-    judged = simulate(axial=1300.0, rpm=1800.0, time=0.05)
+    judged = simulate(axial_force=1300.0, rpm=1800.0, time=0.05)
     assert judged.settled is True  # from its steady start
     assert [settled_label(v) for v in (True, False, None)] == ["yes", "no", "too short to judge"]
 
@@ -603,7 +603,7 @@ def test_the_skid_measure_is_read_first(reference_run, tmp_path):
     assert md.index("kinematic cage slip") < md.index("paper's P19")
     from exudyn_bearing import simulate
 
-    summary = list(simulate(axial=1300.0, rpm=1800.0, time=0.002).results.summary())
+    summary = list(simulate(axial_force=1300.0, rpm=1800.0, time=0.002).results.summary())
     assert summary.index("kinematic_cage_slip_percent") < summary.index("cage_slip_percent")
 
 

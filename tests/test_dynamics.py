@@ -187,7 +187,7 @@ def test_combined_load_at_speed_matches_quasi_static_peak_without_traction():
     res = handle.Results(mbs)
     early = res.time <= 0.002
     speeds = res.ball_orbital_speed[0]
-    qs = solve_load_distribution(BRG, axial=2200.0, radial=2000.0, rpm=1800.0, cage_speed=speeds)
+    qs = solve_load_distribution(BRG, axial_force=2200.0, radial_force=2000.0, rpm=1800.0, cage_speed=speeds)
     peak = float(res.inner["load"][early].max())
     assert np.ptp(speeds) > 0.1 * speeds.mean()  # the balls do orbit at different speeds
     assert peak == pytest.approx(qs.inner_load.max(), rel=0.03), (peak, qs.inner_load.max())

@@ -17,13 +17,13 @@ KEYS = ("kinematic_cage_slip_percent", "cage_slip_percent", "cage_speed")
 
 
 def ratios(settings, time):
-    run = simulate(axial=1300.0, time=time, settings=settings, error_estimate=True)
+    run = simulate(axial_force=1300.0, time=time, settings=settings, error_estimate=True)
     est = run.error_estimate
     step = run.solver["step"]  # the recommended step where settings.step is None
     assert step == (settings.step or 1e-4)
     assert est["reference_step"] == pytest.approx(step / 2)
     assert "error_estimate" in run.to_dict()
-    fine = simulate(axial=1300.0, time=time, settings=SolverSettings(
+    fine = simulate(axial_force=1300.0, time=time, settings=SolverSettings(
         solver=settings.solver, step=step / 8, output_step=settings.output_step,
         relative_tolerance=settings.relative_tolerance / 8, absolute_tolerance=run.solver["absolute_tolerance"] / 8))
     out = {}

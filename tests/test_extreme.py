@@ -44,7 +44,7 @@ def run(time, rpm=RPM, lubricant=REFERENCE_LUBRICANT, **kw):
 
 def quasi_static(axial, radial=0.0, rpm=RPM, cage_speed=None):
     """Largest quasi-static inner and outer contact loads, N."""
-    qs = solve_load_distribution(B, axial=axial, radial=radial, rpm=rpm, cage_speed=cage_speed)
+    qs = solve_load_distribution(B, axial_force=axial, radial_force=radial, rpm=rpm, cage_speed=cage_speed)
     return float(qs.inner_load.max()), float(qs.outer_load.max())
 
 
@@ -133,7 +133,7 @@ def test_unloaded_zone_combined_load(film_elasticity):
     res = run(0.003, rpm=rpm, axialForce=2200.0, radialForce=2000.0,
               contactLaw=ContactLaw(film_elasticity=film_elasticity))
     assert_bounded(res, quasi_static(2200.0, 2000.0, rpm=rpm), rpm * math.pi / 30, steady=True)
-    qs = solve_load_distribution(B, axial=2200.0, radial=2000.0, rpm=rpm)
+    qs = solve_load_distribution(B, axial_force=2200.0, radial_force=2000.0, rpm=rpm)
     assert res.inner["load"][-1].min() < 1.0  # unloaded zone
     assert res.inner["load"][-1].max() == pytest.approx(qs.inner_load.max(), rel=0.05)
 
@@ -241,4 +241,4 @@ def test_impossible_load_pushes_a_ball_out():
 
 def test_infeasible_radial_load_explained():
     with pytest.raises(QuasiStaticError, match="induced axial force"):
-        solve_load_distribution(B, axial=300.0, radial=3000.0, rpm=RPM)
+        solve_load_distribution(B, axial_force=300.0, radial_force=3000.0, rpm=RPM)

@@ -39,7 +39,7 @@ def test_steady_state_at_72000_rpm_is_the_independent_balance():
     ball to outer-raceway control); the package still finds the steady state, and it equals
     the reduced balance of ``tests/reduced_balance.py`` (own kinematics, accurate rule at
     order 24) started from the outer-control axis, within 1e-3."""
-    got = steady_state(B, OIL, axial=AXIAL, rpm=72000.0, drag=DRAG)
+    got = steady_state(B, OIL, axial_force=AXIAL, rpm=72000.0, ball_drag=DRAG)
     ref = solve_balance(B, OIL, AXIAL, 72000.0, 0.5, DRAG_DENSITY, LIMITING_SHEAR, FILM_MODULUS, start_axis="outer")
     assert got.converged, got.message
     assert got.cage_speed == pytest.approx(ref.cage_speed, rel=1e-5)
@@ -53,7 +53,7 @@ def test_high_speed_steady_state_follows_jones():
     the inner angle and closes the outer one, the outer load exceeds the inner by about
     m r_c w_c² along the radius, and the outer race controls the ball, whose spin axis then
     stands perpendicular to the outer contact normal (pitch angle = outer contact angle)."""
-    s = steady_state(B, OIL, axial=AXIAL, rpm=72000.0, drag=DRAG)
+    s = steady_state(B, OIL, axial_force=AXIAL, rpm=72000.0, ball_drag=DRAG)
     a_i, a_o = math.radians(s.inner_contact_angle_deg), math.radians(s.outer_contact_angle_deg)
     assert s.outer_contact_angle_deg < 24.0 < s.inner_contact_angle_deg
     centrifugal = B.ball_mass * s.ball_orbit_radius * s.cage_speed ** 2
@@ -66,7 +66,7 @@ def test_orbit_limit_of_the_default_step():
     """The predictor's centripetal shortfall c h² r_c w_c² stays within 2 outer deflections
     (MODEL.md §10a) at the recommended step, which is a whole fraction of 1e-4 s; hand
     computed for the 72 000 rpm start state."""
-    loads = solve_load_distribution(B, axial=AXIAL, rpm=72000.0)
+    loads = solve_load_distribution(B, axial_force=AXIAL, rpm=72000.0)
     c = 0.25 * (0.5 + 1 / 3 + 0.5) ** 2 * (2 / 3)  # generalized-alpha, rho_inf 0.5: beta (1-af)/(1-am)
     r_c = B.pitch_radius + loads.ball_radius_offset
     by_hand = np.min(np.sqrt(2.0 * loads.outer_deflection / (c * r_c * loads.cage_speed ** 2)))
@@ -81,7 +81,7 @@ def test_dynamic_run_at_72000_rpm_holds_the_steady_state():
     the cage speed stays within 0.1 % of the steady solver's over 3 ms (a drift would mean
     the dynamic model and the steady balance disagree, or a start that is not a rest
     state)."""
-    run = simulate(B, OIL, axial=AXIAL, rpm=72000.0, time=0.003, drag=DRAG)
+    run = simulate(B, OIL, axial_force=AXIAL, rpm=72000.0, time=0.003, ball_drag=DRAG)
     steady = run.initial_steady_state
     assert steady is not None and steady.converged
     nominal = round(0.003 / run.solver["step"])

@@ -24,7 +24,7 @@ def _means(run):
 def test_drive_power_equals_total_loss(law):
     """Energy balance over the last third of a settled run (1.3 kN, 1800 rpm, from the steady
     state): what the inner race puts in leaves through the sources, within 1 %."""
-    run = simulate(axial=1300.0, rpm=1800.0, time=0.05, contact_law=law)
+    run = simulate(axial_force=1300.0, rpm=1800.0, time=0.05, contact_law=law)
     loss, drive = _means(run)
     assert drive > 10.0
     assert loss["total"] == pytest.approx(drive, rel=0.01)
@@ -38,11 +38,11 @@ def test_switched_off_sources_are_zero_and_drag_is_the_closed_form():
     """No drag and no rolling resistance: both sources are exactly zero. With drag, its loss
     is sum over the balls of 1/2 C_D (x rho) pi r^2 |v|^3 at the balls' orbital speeds
     (MODEL.md §8), so it scales with the oil fraction."""
-    bare = simulate(axial=1300.0, rpm=1800.0, time=0.01, drag=None)
+    bare = simulate(axial_force=1300.0, rpm=1800.0, time=0.01, ball_drag=None)
     res = bare.results
     assert np.all(res.power_loss()["ball_drag"] == 0.0) and np.all(res.power_loss()["rolling_resistance"] == 0.0)
     for fraction in (1.0, 0.25):
-        run = simulate(axial=1300.0, rpm=1800.0, time=0.01, drag=BallDrag(0.5, fraction))
+        run = simulate(axial_force=1300.0, rpm=1800.0, time=0.01, ball_drag=BallDrag(0.5, fraction))
         r = run.results
         radius = B.pitch_radius  # the ball speed along the orbit: w_orbit r_c
         speed = r.ball_orbital_speed * radius
@@ -69,8 +69,8 @@ def test_each_source_grows_with_speed_as_its_law_says():
     cage = CageModel(guidance="outer", guide_clearance=0.25e-3, land_width=4e-3)
     runs = {}
     for rpm in (28000.0, 48000.0):
-        run = simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial=667.0, rpm=rpm, time=0.01,
-                       drag=HIGH_SPEED_DRAG, contact_law=law, cage=cage)
+        run = simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial_force=667.0, rpm=rpm, time=0.01,
+                       ball_drag=HIGH_SPEED_DRAG, contact_law=law, cage=cage)
         loss, drive = _means(run)
         assert loss["total"] == pytest.approx(drive, rel=0.02), rpm
         res = run.results
@@ -109,11 +109,11 @@ def test_land_friction_is_the_short_journal_shear_and_closes_the_balance():
     assert k == pytest.approx(2 * math.pi * 0.04 * 0.09 ** 3 * 0.01 / 0.2e-3, rel=1e-12)
     assert land_friction_torque(k, 5.0, 0.6) == pytest.approx(k * 5.0 / 0.8, rel=1e-12)
     cage = CageModel(land_width=0.01)
-    run = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=cage)
+    run = simulate(axial_force=1300.0, rpm=1800.0, time=0.05, cage=cage)
     loss, drive = _means(run)
     assert loss["total"] == pytest.approx(drive, rel=0.01)
     # guided by the driven inner race, the power its land torque puts in is drive power too
-    inner = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(guidance="inner", land_width=0.01))
+    inner = simulate(axial_force=1300.0, rpm=1800.0, time=0.05, cage=CageModel(guidance="inner", land_width=0.01))
     loss_i, drive_i = _means(inner)
     assert loss_i["total"] == pytest.approx(drive_i, rel=0.01) and loss_i["cage"] > 1.0
     res = run.results
@@ -140,7 +140,7 @@ def test_land_play_beyond_the_annulus_names_the_key():
     from exudyn_bearing.cage import CageModel
 
     with pytest.raises(ValueError, match="guide_clearance"):
-        simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial=667.0, rpm=28000.0, time=0.001,
+        simulate(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, axial_force=667.0, rpm=28000.0, time=0.001,
                  cage=CageModel(guide_clearance=2e-3))
 
 
@@ -156,13 +156,13 @@ def test_long_runs_report_progress_on_stderr(monkeypatch, capsys):
     import exudyn_bearing.simulation.runner as runner
     from exudyn_bearing import SolverSettings
 
-    simulate(axial=1300.0, rpm=1800.0, time=0.002)
+    simulate(axial_force=1300.0, rpm=1800.0, time=0.002)
     assert "exudyn_bearing: t =" not in capsys.readouterr().err  # 5-s period: a short run is quiet
     monkeypatch.setattr(runner, "PROGRESS_PERIOD", 0.0)
-    simulate(axial=1300.0, rpm=1800.0, time=0.002)
+    simulate(axial_force=1300.0, rpm=1800.0, time=0.002)
     err = capsys.readouterr().err
     assert "exudyn_bearing: t =" in err and "of 0.002 s" in err and "to go" in err
-    simulate(axial=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
+    simulate(axial_force=1300.0, rpm=1800.0, time=0.002, settings=SolverSettings(progress=False))
     assert "exudyn_bearing: t =" not in capsys.readouterr().err
 
 
@@ -178,7 +178,7 @@ def test_a_bug_in_a_user_function_is_not_reported_as_a_solver_failure(monkeypatc
 
     monkeypatch.setattr(BearingConnector, "residual_forces", broken)
     with pytest.raises(Exception, match="NameError: name 'x' is not defined") as caught:
-        simulate(axial=1300.0, rpm=1800.0, time=0.001)
+        simulate(axial_force=1300.0, rpm=1800.0, time=0.001)
     assert not isinstance(caught.value, BearingSimulationError)
 
 
@@ -219,11 +219,11 @@ def test_pocket_friction_steady_and_dynamic_agree_and_close_the_balance():
     from exudyn_bearing import steady_state
     from exudyn_bearing.cage import CageModel
 
-    slips = [steady_state(axial=1300.0, rpm=1800.0, cage=CageModel(land_width=0.01, pocket_friction=mu))
+    slips = [steady_state(axial_force=1300.0, rpm=1800.0, cage=CageModel(land_width=0.01, pocket_friction=mu))
              .kinematic_cage_slip_percent for mu in (0.0, 0.1, 0.3)]
     assert slips[0] < slips[1] < slips[2]
-    plain = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01))
-    run = simulate(axial=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01, pocket_friction=0.3))
+    plain = simulate(axial_force=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01))
+    run = simulate(axial_force=1300.0, rpm=1800.0, time=0.05, cage=CageModel(land_width=0.01, pocket_friction=0.3))
     assert run.initial_steady_state is not None
     assert run.kinematic_cage_slip_percent == pytest.approx(slips[2], abs=0.05)
     loss, drive = _means(run)
@@ -265,7 +265,7 @@ def test_traction_heat_of_a_settled_run_is_the_integral_of_stress_times_slip():
     from exudyn_bearing import REFERENCE_LUBRICANT as OIL
 
     law = ContactLaw(film_elasticity=False)
-    res = simulate(axial=1300.0, rpm=1800.0, time=0.005, contact_law=law).results
+    res = simulate(axial_force=1300.0, rpm=1800.0, time=0.005, contact_law=law).results
     checked = 0
     for race, conformity, contacts in (("inner", B.inner_conformity, res.inner),
                                        ("outer", B.outer_conformity, res.outer)):

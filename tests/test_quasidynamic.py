@@ -14,8 +14,9 @@ def test_vanishing_radial_load_is_the_axial_steady_state():
     """400 N axial (the balls skid: ~71 % kinematic slip) with 1 N radial: every ball's balance
     at its azimuth, the cage and the inner race as one system gives the cage speed, ball spin
     and race shift of the one-ball steady-state solver (MODEL.md §12) to 0.1 %."""
-    steady = steady_state(axial=400.0, rpm=1800.0)
-    state = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=1.0, rpm=1800.0, drag=REFERENCE_DRAG,
+    steady = steady_state(axial_force=400.0, rpm=1800.0)
+    state = combined_load_state(B, REFERENCE_LUBRICANT, axial_force=400.0, radial_force=1.0, rpm=1800.0,
+                                ball_drag=REFERENCE_DRAG,
                                 steady=steady)
     assert state.converged, state.message
     assert state.cage_speed == pytest.approx(steady.cage_speed, rel=1e-3)
@@ -32,12 +33,13 @@ def test_dynamic_run_from_the_combined_start_holds_its_cage_speed():
     the cage speed stays within 0.2 % of the start over 30 ms, where the pure-rolling start
     drifts by more than 5 % (it needs seconds to settle)."""
     settings = SolverSettings(progress=False)
-    run = simulate(axial=400.0, radial=100.0, rpm=1800.0, time=0.03, initial_state="steady", settings=settings)
+    run = simulate(axial_force=400.0, radial_force=100.0, rpm=1800.0, time=0.03, initial_state="steady",
+                   settings=settings)
     res = run.results
     assert run.initial_steady_state is None  # the combined start is no axial steady state
     start = res.cage_speed[0]
     assert np.max(np.abs(res.cage_speed - start)) < 2e-3 * start
-    rolling = simulate(axial=400.0, radial=100.0, rpm=1800.0, time=0.03, initial_state="rolling",
+    rolling = simulate(axial_force=400.0, radial_force=100.0, rpm=1800.0, time=0.03, initial_state="rolling",
                        settings=settings).results
     assert abs(rolling.cage_speed[-1] - rolling.cage_speed[0]) > 0.05 * rolling.cage_speed[0]
 
@@ -74,7 +76,8 @@ def test_auto_takes_the_combined_start_and_loads_the_pockets():
         assert np.max(np.abs(state.pocket_force)) > 0.5
         np.testing.assert_allclose(circumferential, state.pocket_force, rtol=0,
                                    atol=1e-3 * np.max(np.abs(state.pocket_force)))
-    short = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=300.0, rpm=1800.0, drag=REFERENCE_DRAG,
+    short = combined_load_state(B, REFERENCE_LUBRICANT, axial_force=400.0, radial_force=300.0, rpm=1800.0,
+                                ball_drag=REFERENCE_DRAG,
                                 max_steps=2)
     assert not short.converged and "steps ran out" in short.message
 
@@ -88,7 +91,8 @@ def test_pure_radial_start_balances_every_ball():
 
     deep = Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
                                   inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
-    state = combined_load_state(deep, REFERENCE_LUBRICANT, axial=0.0, radial=2500.0, rpm=3000.0, drag=REFERENCE_DRAG)
+    state = combined_load_state(deep, REFERENCE_LUBRICANT, axial_force=0.0, radial_force=2500.0, rpm=3000.0,
+                                ball_drag=REFERENCE_DRAG)
     assert state.converged, state.message
     # along the load, with a small sideways shift from the contacts' traction
     assert state.displacement[0] > 0 and abs(state.displacement[1]) < 0.02 * state.displacement[0]
@@ -111,5 +115,6 @@ def test_cli_start_flag_takes_the_combined_start(tmp_path):
     assert out.returncode == 0, out.stderr[-2000:]
     data = json.loads(out.stdout)
     assert data["inputs"]["initial_state"] == "'steady'"
-    state = combined_load_state(B, REFERENCE_LUBRICANT, axial=400.0, radial=100.0, rpm=1800.0, drag=REFERENCE_DRAG)
+    state = combined_load_state(B, REFERENCE_LUBRICANT, axial_force=400.0, radial_force=100.0, rpm=1800.0,
+                                ball_drag=REFERENCE_DRAG)
     assert data["cage_speed"] == pytest.approx(state.cage_speed, rel=2e-3)

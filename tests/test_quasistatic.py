@@ -160,7 +160,7 @@ def test_pure_axial_rpm0_matches_jones_harris_thrust_equation():
     alpha = optimize.brentq(lambda a: 16 * k_eff_at(a) * (a_dist * (math.cos(a0) / math.cos(a) - 1)) ** 1.5
                             * math.sin(a) - fa, a0 + 1e-9, a0 + 0.3)
     q_ref = fa / (16 * math.sin(alpha))
-    res = solve_load_distribution(B, axial=fa, rpm=0)
+    res = solve_load_distribution(B, axial_force=fa, rpm=0)
     np.testing.assert_allclose(res.inner_load, q_ref, rtol=2e-3)  # K differs slightly inner vs outer angle
     np.testing.assert_allclose(res.inner_contact_angle, alpha, atol=2e-4)
     assert_matches_jones_harris(res, jones_harris(fa))
@@ -169,7 +169,7 @@ def test_pure_axial_rpm0_matches_jones_harris_thrust_equation():
 
 
 def test_combined_rpm0_max_load_and_unloaded_zone():
-    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=0)
+    res = solve_load_distribution(B, axial_force=2200, radial_force=2000, rpm=0)
     assert res.max_load == pytest.approx(650, rel=0.05)  # paper: 650 N
     jh = jones_harris(2200.0, 2000.0)
     assert_matches_jones_harris(res, jh)
@@ -192,7 +192,7 @@ def _check_race_balance(res, fa, fr):
 def test_centrifugal_force_splits_contact_angles_at_1800rpm(fa, inner, outer):
     """Against the Jones–Harris equilibrium solved here; ``inner``/``outer``: the (load N,
     angle deg) printed in MODEL.md §4 and the README, which must be its rounded values."""
-    res = solve_load_distribution(B, axial=fa, rpm=1800)
+    res = solve_load_distribution(B, axial_force=fa, rpm=1800)
     fc = 0.064 * 0.0775 * (1800 * math.pi / 30 / 2 * (1 - 25 * math.cos(math.radians(40)) / 155)) ** 2
     assert res.centrifugal_force == pytest.approx(fc, rel=1e-12) and fc == pytest.approx(34, abs=0.5)
     jh = jones_harris(float(fa), rpm=1800.0)
@@ -215,7 +215,7 @@ def test_centrifugal_force_splits_contact_angles_at_1800rpm(fa, inner, outer):
 
 
 def test_combined_1800rpm_every_ball_loaded():
-    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800)
+    res = solve_load_distribution(B, axial_force=2200, radial_force=2000, rpm=1800)
     jh = jones_harris(2200.0, 2000.0, 1800.0)
     assert_matches_jones_harris(res, jh)
     # MODEL.md §9: "≈26 N minimum, ≈890 N maximum"
@@ -242,21 +242,21 @@ def test_fixed_angle_combined_load_matches_sjovall():
     target = fr * math.tan(alpha) / fa
     eps = optimize.brentq(lambda e: (lambda j: j[0] / j[1] - target)(_sjovall(e)), 0.01, 50)
     q_max = fa / (16 * _sjovall(eps)[1] * math.sin(alpha))
-    res = solve_load_distribution(B, axial=fa, radial=fr, rpm=0, mode="fixed-angle")
+    res = solve_load_distribution(B, axial_force=fa, radial_force=fr, rpm=0, mode="fixed-angle")
     assert res.max_load == pytest.approx(q_max, rel=0.02)  # 16 discrete balls vs the integral
     assert res.max_load == pytest.approx(650, rel=0.05)
 
 
 def test_fixed_angle_pure_radial_is_stribeck():
     fr, alpha = 2000.0, math.radians(40)
-    res = solve_load_distribution(B, radial=fr, rpm=0, mode="fixed-angle", hold_axial=True)
+    res = solve_load_distribution(B, radial_force=fr, rpm=0, mode="fixed-angle", hold_axial=True)
     q_ref = fr / (16 * 0.2288 * math.cos(alpha))  # Q_max = 4.37 F_r / (Z cos a)
     assert res.max_load == pytest.approx(q_ref, rel=0.02)
     assert res.displacement[2] == 0.0
 
 
 def test_fixed_angle_axial_is_paper_p4_p5():
-    res = solve_load_distribution(B, axial=1300, rpm=0, mode="fixed-angle")
+    res = solve_load_distribution(B, axial_force=1300, rpm=0, mode="fixed-angle")
     np.testing.assert_allclose(res.inner_load, 1300 / (16 * math.sin(math.radians(40))), rtol=1e-9)
     delta = res.displacement[2] * math.sin(math.radians(40))
     np.testing.assert_allclose(res.inner_load, k_eff_at(math.radians(40)) * delta ** 1.5, rtol=1e-9)
@@ -264,7 +264,7 @@ def test_fixed_angle_axial_is_paper_p4_p5():
 
 def test_tilting_moment_balanced():
     m_y = 10.0
-    res = solve_load_distribution(B, axial=2200, rpm=0, moment=(0.0, m_y))
+    res = solve_load_distribution(B, axial_force=2200, rpm=0, moment=(0.0, m_y))
     assert abs(res.tilt[1]) > 0 and np.all(res.reaction_moment == 0)
     # moment of the ball forces on the inner race about the centre (contact points at the
     # ball centre minus r n_i, normals in the meridional plane; tilts are ~1e-4 rad)
@@ -279,15 +279,15 @@ def test_tilting_moment_balanced():
 
 def test_bad_input_and_no_equilibrium():
     with pytest.raises(ValueError, match="axial"):
-        solve_load_distribution(B, axial=-5.0)
+        solve_load_distribution(B, axial_force=-5.0)
     with pytest.raises(ValueError, match="radial"):
-        solve_load_distribution(B, axial=100, radial=float("nan"))
+        solve_load_distribution(B, axial_force=100, radial_force=float("nan"))
     with pytest.raises(ValueError, match="axial"):
-        solve_load_distribution(B, radial=1000, mode="fixed-angle")
+        solve_load_distribution(B, radial_force=1000, mode="fixed-angle")
     with pytest.raises(QuasiStaticError, match="did not converge"):
-        solve_load_distribution(B, axial=1000, max_iter=1)
+        solve_load_distribution(B, axial_force=1000, max_iter=1)
     with pytest.raises(ValueError, match="cage_speed"):
-        solve_load_distribution(B, axial=1000, rpm=1800, cage_speed=float("inf"))
+        solve_load_distribution(B, axial_force=1000, rpm=1800, cage_speed=float("inf"))
 
 
 @pytest.mark.parametrize("mode", ["geometric", "fixed-angle"])
@@ -295,12 +295,12 @@ def test_race_force_balances_the_applied_load(mode):
     """The balls' force on the inner race is minus the applied load (equilibrium); in the
     geometric mode their moment is minus the reaction moment the shaft supplies; a given
     cage speed of 0 is the no-centrifugal (0 rpm) solution."""
-    res = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800, mode=mode)
+    res = solve_load_distribution(B, axial_force=2200, radial_force=2000, rpm=1800, mode=mode)
     np.testing.assert_allclose(res.race_force, [-2000.0, 0.0, -2200.0], atol=1e-6 * 2200)
     if mode == "geometric":
         np.testing.assert_allclose(res.race_moment[:2], -res.reaction_moment, atol=1e-9)
-    still = solve_load_distribution(B, axial=2200, radial=2000, rpm=1800, mode=mode, cage_speed=0.0)
-    rest = solve_load_distribution(B, axial=2200, radial=2000, rpm=0, mode=mode)
+    still = solve_load_distribution(B, axial_force=2200, radial_force=2000, rpm=1800, mode=mode, cage_speed=0.0)
+    rest = solve_load_distribution(B, axial_force=2200, radial_force=2000, rpm=0, mode=mode)
     np.testing.assert_allclose(still.inner_load, rest.inner_load, rtol=1e-9, atol=1e-9)
 
 
@@ -313,7 +313,7 @@ def test_cli_json():
     np.testing.assert_allclose(data["inner_load"], q_i, rtol=1e-7)
     assert data["axial_displacement"] > 0 and data["radial_displacement"] == pytest.approx(0, abs=1e-9)
     # issue 16 item 7: the Python names, degrees beside radians, a unit for every key
-    res = solve_load_distribution(B, axial=1300.0, rpm=0.0)
+    res = solve_load_distribution(B, axial_force=1300.0, rpm=0.0)
     assert set(vars(res)) <= set(data) and set(data["units"]) == set(data) - {"units", "inputs"}
     assert "balls=16" in data["inputs"]["bearing"]  # what produced it
     np.testing.assert_allclose(data["inner_contact_angle_deg"], np.degrees(data["inner_contact_angle"]), rtol=1e-12)
@@ -339,7 +339,7 @@ def test_deep_groove_radial_load_alone_is_stribeck_with_clearance(pd):
     Analysis, ch. 7): Q_j = K (delta_r cos psi_j - P_d/2)^1.5, sum Q_j cos psi_j = F_r,
     K the series stiffness of both contacts at zero contact angle (P_d = 0: free angle 0)."""
     brg, fr = _deep_groove(pd), 2500.0
-    res = solve_load_distribution(brg, radial=fr, rpm=0)
+    res = solve_load_distribution(brg, radial_force=fr, rpm=0)
     k_i, k_o = (brg.hertz(0.0, race).stiffness for race in ("inner", "outer"))
     k = (k_i ** (-2 / 3) + k_o ** (-2 / 3)) ** -1.5
     psi = 2 * np.pi * np.arange(brg.balls) / brg.balls
@@ -357,7 +357,7 @@ def test_deep_groove_small_axial_with_large_radial():
     """Fixed angles cannot carry 2.5 kN radial with 200 N axial (1.25 F_r tan a0 = 422 N);
     full grooves can: the solve falls back to the centred start and balances both loads."""
     brg = _deep_groove()
-    res = solve_load_distribution(brg, axial=200.0, radial=2500.0, rpm=3000)
+    res = solve_load_distribution(brg, axial_force=200.0, radial_force=2500.0, rpm=3000)
     np.testing.assert_allclose(-res.race_force, [2500.0, 0.0, 200.0], atol=1e-6 * 2500)
     assert res.inner_contact_angle.max() > 0
 
@@ -381,6 +381,6 @@ def test_zero_clearance_deep_groove_under_axial_load():
         return brg.balls * k_series(alpha) * (a_len * (1 / math.cos(alpha) - 1)) ** 1.5 * math.sin(alpha) - fa
 
     alpha = optimize.brentq(excess, 1e-3, 0.6)
-    res = solve_load_distribution(brg, axial=fa, rpm=0)
+    res = solve_load_distribution(brg, axial_force=fa, rpm=0)
     np.testing.assert_allclose(res.inner_contact_angle, alpha, atol=2e-3)  # inner/outer Hertz differ slightly
     np.testing.assert_allclose(res.inner_load, fa / (brg.balls * math.sin(alpha)), rtol=5e-3)

@@ -22,7 +22,7 @@ def assert_not_blank(path):
 
 
 def test_raytracer_frame(tmp_path):
-    files = render_run(tmp_path, axial=2200.0, radial=2000.0, time=0.0005, frames=1, backend="raytracer")
+    files = render_run(tmp_path, axial_force=2200.0, radial_force=2000.0, time=0.0005, frames=1, backend="raytracer")
     assert len(files) == 1 and files[0].exists()
     assert_not_blank(files[0])
 
@@ -44,7 +44,7 @@ def test_frames_are_labelled_and_animated(tmp_path):
     from PIL import Image
 
     gif = tmp_path / "run.gif"
-    files = render_run(tmp_path, axial=1300.0, time=0.0004, frames=2, backend="raytracer", size=(400, 300),
+    files = render_run(tmp_path, axial_force=1300.0, time=0.0004, frames=2, backend="raytracer", size=(400, 300),
                        animation=gif)
     frames, anim = files[:2], files[2]
     a, b = (plt.imread(f)[..., :3] for f in frames)

@@ -50,7 +50,7 @@ FILM_MODULUS = 0.2953
 
 
 def run(axial, time, **kw):
-    return simulate(axial=axial, rpm=RPM, time=time, **kw)
+    return simulate(axial_force=axial, rpm=RPM, time=time, **kw)
 
 
 def test_without_drag_the_cage_runs_at_the_pure_rolling_speed():
@@ -65,7 +65,7 @@ def test_without_drag_the_cage_runs_at_the_pure_rolling_speed():
     w = res.ball_omega_orbiting[last]  # (circumferential, radial, axial)
     beta = np.arctan2(-w[..., 1], w[..., 2])  # absolute spin axis from the bearing axis, towards -e_r
     a_i, a_o = res.inner["contact_angle"][last], res.outer["contact_angle"][last]
-    qs = solve_load_distribution(b, axial=3000.0, rpm=RPM, cage_speed=float(np.mean(res.cage_speed[last])))
+    qs = solve_load_distribution(b, axial_force=3000.0, rpm=RPM, cage_speed=float(np.mean(res.cage_speed[last])))
     r_c = b.pitch_radius + float(np.mean(qs.ball_radius_offset))
     r_a = r_c - b.ball_radius * np.cos(a_i)
     w_roll = W_INNER * r_a / (r_c * (1.0 + np.cos(a_i - beta) / np.cos(a_o - beta)))

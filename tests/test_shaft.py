@@ -42,8 +42,8 @@ def test_axial_split_is_compatible_with_single_bearing_solves():
     sol = solve_shaft(_pair(preload), force=(0.0, 0.0, 1500.0))
     f_a, f_b = -sol.reaction_force[0, 2], sol.reaction_force[1, 2]
     assert f_a - f_b == pytest.approx(1500.0, rel=1e-8)
-    d_a = solve_load_distribution(BRG, axial=f_a).displacement[2]
-    d_b = solve_load_distribution(BRG, axial=f_b).displacement[2]
+    d_a = solve_load_distribution(BRG, axial_force=f_a).displacement[2]
+    d_b = solve_load_distribution(BRG, axial_force=f_b).displacement[2]
     assert d_a - preload == pytest.approx(sol.displacement[2], abs=1e-12)
     assert preload - d_b == pytest.approx(sol.displacement[2], abs=1e-12)
 

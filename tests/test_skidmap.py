@@ -40,7 +40,7 @@ def test_threshold_interpolation():
 
 def test_local_run_writes_incrementally_and_resumes(tmp_path):
     lines = []
-    result = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
+    result = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
                       progress=lines.append)
     assert len(result.points) == 2 and all(p.error is None for p in result.points)
     journal = (tmp_path / "points.jsonl").read_text().splitlines()
@@ -53,7 +53,7 @@ def test_local_run_writes_incrementally_and_resumes(tmp_path):
     assert by_load[3000.0].kinematic_cage_slip_percent < by_load[1300.0].kinematic_cage_slip_percent
     # second call: nothing recomputed, same table
     lines.clear()
-    again = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
+    again = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
                      progress=lines.append)
     assert len((tmp_path / "points.jsonl").read_text().splitlines()) == 2
     assert lines and lines[0].startswith("resuming: 2 of 2")
@@ -71,7 +71,7 @@ def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
         return real(*args, **kwargs)
 
     monkeypatch.setattr(sim, "simulate", flaky)
-    result = skid_map(axial=[999.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=1, progress=None)
+    result = skid_map(axial_force=[999.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=1, progress=None)
     bad, good = result.points
     assert bad.error is not None and "ball 3 inner contact diverged" in bad.error
     assert good.error is None and good.kinematic_cage_slip_percent is not None
@@ -81,10 +81,11 @@ def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
 
 def test_dask_local_cluster_gives_identical_results(tmp_path):
     distributed = pytest.importorskip("dask.distributed")
-    local = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, workers=1, progress=None)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+    local = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, workers=1, progress=None)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
-        remote = skid_map(axial=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, client=client, progress=None)
+        remote = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, client=client, progress=None)
     # Same points, same numbers to the solver's tolerance: the serial kernel (Dask worker
     # threads) and the threaded one (main thread) are compiled separately, and with fastmath
     # contraction their float32 traction sums may round differently (seen with the elastic
@@ -125,11 +126,11 @@ def test_failed_points_are_retried_on_resume(tmp_path):
     """A point that failed (here: 1e9 N, no quasi-static equilibrium) is recorded with its
     error and run again by the next call into the same folder, not served from the journal."""
     lines = []
-    first = skid_map(axial=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
+    first = skid_map(axial_force=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
                      refine=False)
     assert first.points[0].error
     lines.clear()
-    second = skid_map(axial=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
+    second = skid_map(axial_force=[1e9], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=lines.append,
                       refine=False)
     assert not any(line.startswith("resuming") for line in lines)
     assert second.points[0].error
@@ -137,11 +138,12 @@ def test_failed_points_are_retried_on_resume(tmp_path):
     assert len(journal) == 2  # both attempts recorded
 
 
-@pytest.mark.parametrize("kw, name", [(dict(axial=[-1.0]), "axial"), (dict(radial=[float("nan")]), "radial"),
+@pytest.mark.parametrize("kw, name", [(dict(axial_force=[-1.0]), "axial_force"),
+                                      (dict(radial_force=[float("nan")]), "radial_force"),
                                       (dict(rpm=[float("inf")]), "rpm"), (dict(time=0.0), "time"),
-                                      (dict(axial=[0.0]), "axial")])
+                                      (dict(axial_force=[0.0]), "axial_force")])
 def test_grid_is_validated_before_any_run(kw, name, tmp_path):
-    args = dict(axial=[1300.0], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=None)
+    args = dict(axial_force=[1300.0], rpm=[1800.0], time=0.002, out=tmp_path, workers=1, progress=None)
     args.update(kw)
     with pytest.raises(ValueError, match=name):
         skid_map(**args)
@@ -164,7 +166,8 @@ def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
         return original(*args, **kw)
 
     monkeypatch.setattr(runner, "simulate", counting)
-    table = skid_map(axial=[1300.0], rpm=[1800.0], time=None, out=tmp_path, workers=1, progress=None, refine=False)
+    table = skid_map(axial_force=[1300.0], rpm=[1800.0], time=None, out=tmp_path, workers=1, progress=None,
+                     refine=False)
     assert lengths == [0.002, 0.004, 0.008]
     point = table.points[0]
     assert point.simulated_time == 0.008 and point.settled is None and point.time is None

@@ -30,7 +30,7 @@ def test_matches_the_independent_reduced_balance(axial):
     """400 N (gross sliding, ~71 %) and 1.3 kN (~3.8 %): slip, cage speed, attitude and
     loads equal the reduced balance's within 1e-3 relative (both use the accurate rule;
     the package at order 16, the balance at 24)."""
-    got = steady_state(axial=axial, rpm=RPM)
+    got = steady_state(axial_force=axial, rpm=RPM)
     ref = solve_balance(B, REFERENCE_LUBRICANT, axial, RPM, DRAG_COEFFICIENT, OIL_DENSITY, LIMITING_SHEAR,
                         FILM_MODULUS)
     assert got.converged and got.residual < 1e-8
@@ -49,7 +49,7 @@ def test_without_drag_the_balls_roll(axial):
     cage runs at the pure-rolling speed of the balls' own spin axes (MODEL.md §7): kinematic
     cage slip within 0.05 % of zero, and the cage speed equals the closed-form pure-rolling
     speed for the solved axis, w_c r_c + W (e x (p - c))_y = w_race rho_p at both contacts."""
-    got = steady_state(axial=axial, rpm=RPM, drag=None)
+    got = steady_state(axial_force=axial, rpm=RPM, ball_drag=None)
     assert got.converged
     assert abs(got.kinematic_cage_slip_percent) < 0.05
     c = np.array([got.ball_orbit_radius, 0.0, got.ball_axial_position])
@@ -63,7 +63,7 @@ def test_without_drag_the_balls_roll(axial):
 def test_drag_slows_the_cage_more_at_light_load():
     """With drag the kinematic slip falls with load (MODEL.md §7), from gross sliding at
     200 N to a fraction of a percent at 3 kN."""
-    slips = [steady_state(axial=fa, rpm=RPM).kinematic_cage_slip_percent for fa in (200.0, 1000.0, 3000.0)]
+    slips = [steady_state(axial_force=fa, rpm=RPM).kinematic_cage_slip_percent for fa in (200.0, 1000.0, 3000.0)]
     assert slips[0] > 50 and slips[2] < 0.5
     assert slips[0] > slips[1] > slips[2]
 
@@ -75,12 +75,12 @@ def test_dynamic_run_started_from_the_steady_state_stays_on_it(axial):
     reports the run settled after 0.06 s (from a pure-rolling start 400 N needs ~1.7 s)."""
     from exudyn_bearing import simulate
 
-    state = steady_state(axial=axial, rpm=RPM)
-    run = simulate(axial=axial, rpm=RPM, time=0.06)
+    state = steady_state(axial_force=axial, rpm=RPM)
+    run = simulate(axial_force=axial, rpm=RPM, time=0.06)
     assert run.kinematic_cage_slip_percent == pytest.approx(state.kinematic_cage_slip_percent, abs=0.05)
     assert run.cage_speed == pytest.approx(state.cage_speed, rel=1e-3)
     assert run.settled
-    rolling = simulate(axial=axial, rpm=RPM, time=0.06, initial_state="rolling")
+    rolling = simulate(axial_force=axial, rpm=RPM, time=0.06, initial_state="rolling")
     assert abs(rolling.kinematic_cage_slip_percent - state.kinematic_cage_slip_percent) > 0.1  # still on its way
 
 
@@ -101,9 +101,10 @@ def test_gyroscopic_criterion_closed_form():
         gyroscopic_minimum_axial(B, RPM, traction_coefficient=0.0)
 
 
-@pytest.mark.parametrize("kw, name", [(dict(axial=-5.0, rpm=RPM), "axial"), (dict(axial=float("nan"), rpm=RPM), "axial"),
-                                      (dict(axial=500.0, rpm=float("inf")), "rpm"),
-                                      (dict(axial=500.0, rpm=0.0), "rpm")])
+@pytest.mark.parametrize("kw, name", [(dict(axial_force=-5.0, rpm=RPM), "axial_force"),
+                                      (dict(axial_force=float("nan"), rpm=RPM), "axial_force"),
+                                      (dict(axial_force=500.0, rpm=float("inf")), "rpm"),
+                                      (dict(axial_force=500.0, rpm=0.0), "rpm")])
 def test_bad_input_names_the_parameter(kw, name):
     with pytest.raises(ValueError, match=name):
         steady_state(**kw)
@@ -151,7 +152,7 @@ def test_zero_clearance_deep_groove():
 
     brg = Bearing.from_clearance(diametral_clearance=0.0, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
                                  inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
-    state = steady_state(brg, axial=200.0, rpm=3000.0)
+    state = steady_state(brg, axial_force=200.0, rpm=3000.0)
     assert state.converged
-    qs = solve_load_distribution(brg, axial=200.0, rpm=3000.0, cage_speed=state.cage_speed)
+    qs = solve_load_distribution(brg, axial_force=200.0, rpm=3000.0, cage_speed=state.cage_speed)
     assert state.inner_contact_angle_deg == pytest.approx(math.degrees(qs.inner_contact_angle[0]), abs=0.5)

@@ -55,6 +55,6 @@ def test_combined_load_with_the_paper_law_warns():
     from exudyn_bearing.simulation.runner import simulate
 
     with pytest.warns(TractionCoefficientWarning):
-        run = simulate(axial=2200.0, radial=2000.0, time=0.001, contact_law=ContactLaw(traction="crook"))
+        run = simulate(axial_force=2200.0, radial_force=2000.0, time=0.001, contact_law=ContactLaw(traction="crook"))
     assert run.details["max_traction_coefficient"] > 0.15
     assert run.results.traction_warning is not None

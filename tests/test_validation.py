@@ -144,12 +144,12 @@ CASES = [
     # invalid TOML: the file itself is the offending input; the message says what is wrong with it
     _case(loads_bearing, dict(text="[bearing\nballs = 6\n"), "TOML", "file-not-toml"),
     # -- quasi-static load distribution --------------------------------------------------
-    _case(P(solve_load_distribution, BRG), dict(axial=1000.0, outer_rpm=NAN), "outer_rpm", "qs-outer_rpm"),
-    _case(P(solve_load_distribution, BRG), dict(axial=1000.0, moment=(1.0,)), "moment", "qs-moment-length"),
-    _case(P(solve_load_distribution, BRG), dict(axial=1000.0, moment=(1.0, INF)), "moment", "qs-moment-inf"),
-    _case(P(solve_load_distribution, BRG), dict(axial=1000.0, mode="exact"), "mode", "qs-mode"),
-    _case(P(solve_load_distribution, BRG), dict(), "axial", "qs-no-load"),
-    _case(P(solve_load_distribution, BRG), dict(axial=1000.0, mode="fixed-angle", moment=(1.0, 0.0)), "moment",
+    _case(P(solve_load_distribution, BRG), dict(axial_force=1000.0, outer_rpm=NAN), "outer_rpm", "qs-outer_rpm"),
+    _case(P(solve_load_distribution, BRG), dict(axial_force=1000.0, moment=(1.0,)), "moment", "qs-moment-length"),
+    _case(P(solve_load_distribution, BRG), dict(axial_force=1000.0, moment=(1.0, INF)), "moment", "qs-moment-inf"),
+    _case(P(solve_load_distribution, BRG), dict(axial_force=1000.0, mode="exact"), "mode", "qs-mode"),
+    _case(P(solve_load_distribution, BRG), dict(), "axial_force", "qs-no-load"),
+    _case(P(solve_load_distribution, BRG), dict(axial_force=1000.0, mode="fixed-angle", moment=(1.0, 0.0)), "moment",
           "qs-moment-fixed-angle"),
     _case(P(solve_load_distribution, BRG), dict(displacement=(1e-6, 0.0)), "displacement", "qs-displacement"),
     _case(P(solve_load_distribution, BRG), dict(displacement=(0.0, 0.0, NAN)), "displacement",
@@ -162,7 +162,7 @@ CASES = [
     _case(solve_shaft, dict(bearings=[BRG]), "bearings", "shaft-not-shaft-bearing"),
     _case(P(solve_shaft, [_shaft_bearing()]), dict(moment=(0.0, NAN)), "moment", "shaft-moment"),
     # -- skid map --------------------------------------------------------------------------
-    _case(skid_map, dict(axial=(), progress=None), "axial", "skidmap-empty-grid"),
+    _case(skid_map, dict(axial_force=(), progress=None), "axial_force", "skidmap-empty-grid"),
 ]
 
 

@@ -309,7 +309,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     # nominal cage speed: 200 N would start 13.5 N out of radial balance on a 15 N load)
     for _ in range(20):
         if loaded:
-            loads = solve_load_distribution(bearing, axial=axial, radial=radial, cage_speed=cage_speed, **speeds)
+            loads = solve_load_distribution(bearing, axial_force=axial, radial_force=radial, cage_speed=cage_speed,
+                                            **speeds)
             relative[:3] = loads.displacement
         else:
             loads = solve_load_distribution(bearing, displacement=relative, cage_speed=cage_speed, **speeds)
@@ -331,9 +332,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
             break
         # one speed for a pure axial load (all balls alike), each ball's own otherwise
         cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
-    steady = steady_start(bearing, lubricant, initialState, axial=axial, radial=radial, rpm_i=rpm_i, rpm_o=rpm_o,
-                           sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
-                           contactLaw=contactLaw, ballDrag=ballDrag, cage=cage)
+    steady = steady_start(bearing, lubricant, initialState, axial_force=axial, radial_force=radial, rpm_i=rpm_i,
+                          rpm_o=rpm_o, sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
+                          contact_law=contactLaw, ball_drag=ballDrag, cage=cage)
     e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
     quasi = None
     if isinstance(steady, AzimuthStates):  # combined load: each ball in its own balance, one cage speed

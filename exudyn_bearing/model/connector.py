@@ -488,7 +488,7 @@ class BearingConnector:
             return ""
         what = f"the applied load ({axial:.4g} N axial, {radial:.4g} N radial)"
         try:
-            qs = solve_load_distribution(self.bearing, axial=max(axial, 0.0), radial=radial)
+            qs = solve_load_distribution(self.bearing, axial_force=max(axial, 0.0), radial_force=radial)
         except (QuasiStaticError, ValueError) as err:
             return f"{what} has no quasi-static equilibrium ({err}): the bearing cannot carry it"
         worst = []

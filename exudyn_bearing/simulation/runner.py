@@ -17,6 +17,7 @@ from ..errors import BearingSimulationError
 from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
 from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
 from ..races import node_rows
+from ..renamed import accepts_old_names
 from ..results.records import assumptions_record, inputs_record, units_of
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
@@ -384,10 +385,11 @@ class SimulationSummary:
         return d | {"units": units_of(d), "inputs": self.inputs}
 
 
-def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT, *, axial: float = 1300.0,
-             radial: float = 0.0, rpm: float = 1800.0, time: float = 0.05, settings: SolverSettings = SolverSettings(),
-             drag: BallDrag | None = REFERENCE_DRAG, contact_law: ContactLaw = ContactLaw(),
-             cage: CageModel = CageModel(), error_estimate: bool = False,
+@accepts_old_names
+def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT, *, axial_force: float = 1300.0,
+             radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
+             settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = REFERENCE_DRAG,
+             contact_law: ContactLaw = ContactLaw(), cage: CageModel = CageModel(), error_estimate: bool = False,
              initial_state: str = "auto") -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
@@ -409,8 +411,8 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=Fixed(),
-                                         axialForce=axial, radialForce=radial, contactLaw=contact_law, cage=cage,
-                                         ballDrag=drag, initialState=initial_state, show=False)
+                                         axialForce=axial_force, radialForce=radial_force, contactLaw=contact_law,
+                                         cage=cage, ballDrag=ball_drag, initialState=initial_state, show=False)
     mbs.Assemble()
     info = run_solver(mbs, [handle], time, settings)
     results = handle.Results(mbs)
@@ -420,7 +422,8 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
         finer = replace(settings, step=0.5 * info.solver["step"], output_step=settings.output_step,
                         relative_tolerance=0.5 * settings.relative_tolerance,
                         absolute_tolerance=0.5 * info.solver["absolute_tolerance"])
-        ref = simulate(bearing, lubricant, axial=axial, radial=radial, rpm=rpm, time=time, settings=finer, drag=drag,
+        ref = simulate(bearing, lubricant, axial_force=axial_force, radial_force=radial_force, rpm=rpm, time=time,
+                       settings=finer, ball_drag=ball_drag,
                        contact_law=contact_law, cage=cage, initial_state=initial_state)
         keys = ("cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
                 "max_inner_slip")
@@ -429,7 +432,7 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
         estimate = {"method": "rerun at half the step (and half the tolerances)", "reference_step": finer.step,
                     "reference_wall_time_s": ref.wall_time_s}
         estimate.update({k: abs(float(summary[k]) - float(other[k])) for k in keys})
-    return SimulationSummary(axial, radial, rpm, time, summary["kinematic_cage_slip_percent"],
+    return SimulationSummary(axial_force, radial_force, rpm, time, summary["kinematic_cage_slip_percent"],
                              summary["cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
                              info.solver, info.newton_iterations, info.jacobian_updates,
@@ -437,5 +440,6 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
                              {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
-                             inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, initial_state=initial_state),
-                             info.cpu_time_s, assumptions_record(drag, contact_law, lubricant))
+                             inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
+                                           cage=cage, initial_state=initial_state),
+                             info.cpu_time_s, assumptions_record(ball_drag, contact_law, lubricant))

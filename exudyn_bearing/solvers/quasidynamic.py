@@ -27,6 +27,7 @@ import numpy as np
 from contact import cage as cage_physics
 from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
+from ..renamed import accepts_old_names
 from .newton import damped_newton
 from .steady import contact_constants, steady_state
 
@@ -163,14 +164,16 @@ def seed_axial_load(axial: float, radial: float) -> float:
     return axial if axial > 0 else RADIAL_SEED_FRACTION * abs(radial)
 
 
-def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm: float, outer_rpm: float = 0.0,
-                        drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
+@accepts_old_names
+def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force: float, rpm: float,
+                        outer_rpm: float = 0.0,
+                        ball_drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
                         tol: float = 1e-8, max_steps: int | None = None,
                         max_step: float | None = None) -> AzimuthStates:
-    """The quasi-dynamic state under ``axial`` + ``radial`` load (N; radial along the bearing
+    """The quasi-dynamic state under ``axial_force`` + ``radial_force`` load (N; radial along the bearing
     frame's x axis), continued in radial load from the axial steady state ``steady``
     (:func:`exudyn_bearing.steady_state` of the same bearing, oil, drag, law and speeds at
-    ``axial``, or at :data:`RADIAL_SEED_FRACTION` of the radial load where ``axial`` is 0;
+    ``axial_force``, or at :data:`RADIAL_SEED_FRACTION` of the radial load where ``axial_force`` is 0;
     solved here if None) in steps of at most ``max_step`` N (None: a tenth of the axial
     load, which keeps a skidding bearing on the dynamic model's branch), halved where a step
     does not converge (module docstring, MODEL.md §12a), each solved by a damped Newton from
@@ -179,9 +182,9 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
     then not be used."""
     start = _time.perf_counter()
-    seed = seed_axial_load(axial, radial)
+    seed = seed_axial_load(axial_force, radial_force)
     if steady is None:
-        steady = steady_state(bearing, lubricant, axial=seed, rpm=rpm, outer_rpm=outer_rpm, drag=drag,
+        steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,
                               contact_law=contact_law, cage=cage)
     # the accurate traction rule (smooth for the root finder); order 8 gives the order-16 cage
     # speed to 2e-5 (400 N + 300 N: 46.149 / 46.150 rad/s) at 60 % of its cost
@@ -196,14 +199,15 @@ def combined_load_state(bearing, lubricant, *, axial: float, radial: float, rpm:
     per[:, 5] = steady.ball_axial_position
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
-    make = lambda a, r: _Balance(bearing, lubricant, w_i, w_o, drag, law, land, a, r)  # noqa: E731
-    largest = max(0.1 * seed, 1e-3 * abs(radial)) if max_step is None else max_step
-    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial), largest, tol, max_steps)
-    if message is None and axial <= 0 < abs(radial):
-        y, worst, message, balance, left = _continue(make, y, (seed, radial), (0.0, radial), 0.25 * seed, tol, left)
+    make = lambda a, r: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, a, r)  # noqa: E731
+    largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
+    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps)
+    if message is None and axial_force <= 0 < abs(radial_force):
+        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force), 0.25 * seed,
+                                                     tol, left)
     converged = message is None
     if balance is None:  # no load step: the steady state itself
-        balance = make(axial, 0.0)
+        balance = make(axial_force, 0.0)
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
                          d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)

@@ -31,6 +31,7 @@ from contact.hertz import effective_ball_stiffness
 from ..bearing import Bearing
 from ..errors import QuasiStaticError
 from ..jacobian.differences import central_jacobian
+from ..renamed import accepts_old_names
 from ..results.records import units_of
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
@@ -100,7 +101,7 @@ def _check_load(name: str, value) -> float:
     if value < 0:
         raise ValueError(f"{name} must be non-negative, got {value!r}: it acts along the bearing axis (+z of the "
                          "bearing frame); for a load the other way mount the bearing the other way round (in a "
-                         "scene: rotationMatrix=np.diag([1, -1, -1]))" if name == "axial" else
+                         "scene: rotationMatrix=np.diag([1, -1, -1]))" if name == "axial_force" else
                          f"{name} must be non-negative, got {value!r} (reverse the frame instead)")
     return float(value)
 
@@ -346,7 +347,8 @@ def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> 
     return (axial * a * (2.0 * a) ** 1.5 / (bearing.balls * k)) ** 0.25
 
 
-def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float = 0.0, rpm: float = 0.0,
+@accepts_old_names
+def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_force: float = 0.0, rpm: float = 0.0,
                             *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
                             max_iter: int = 60, outer_rpm: float = 0.0,
@@ -356,7 +358,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     Parameters
     ----------
     bearing : Bearing
-    axial, radial : float
+    axial_force, radial_force : float
         Applied forces on the inner race, N (axial along +z, radial along +x), >= 0.
     rpm : float
         Inner-race speed, rev/min (outer race fixed); sets the cage speed and the
@@ -393,7 +395,8 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         Newton–Raphson did not converge (e.g. a radial load with no axial force on a
         bearing that cannot carry it).
     """
-    axial, radial, rpm = _check_load("axial", axial), _check_load("radial", radial), _check_load("rpm", rpm)
+    axial_force, radial_force = _check_load("axial_force", axial_force), _check_load("radial_force", radial_force)
+    rpm = _check_load("rpm", rpm)
     if not math.isfinite(outer_rpm):
         raise ValueError(f"outer_rpm must be finite, got {outer_rpm!r}")
     if moment is not None:
@@ -402,9 +405,9 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
             raise ValueError(f"moment must be two finite numbers (M_x, M_y) in N m, got {moment!r}")
     if mode not in ("geometric", "fixed-angle"):
         raise ValueError(f"mode must be 'geometric' or 'fixed-angle', got {mode!r}")
-    if axial == 0 and radial == 0 and moment is None and not hold_axial and displacement is None:
-        raise ValueError("axial, radial: at least one load is needed for a load distribution")
-    if axial == 0 and radial > 0 and not hold_axial and mode == "fixed-angle":
+    if axial_force == 0 and radial_force == 0 and moment is None and not hold_axial and displacement is None:
+        raise ValueError("axial_force, radial_force: at least one load is needed for a load distribution")
+    if axial_force == 0 and radial_force > 0 and not hold_axial and mode == "fixed-angle":
         raise ValueError("axial: with fixed contact angles an angular-contact bearing has no equilibrium under "
                          "radial load alone; give an axial force or hold_axial=True")
     if cage_speed is None:
@@ -424,7 +427,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     if mode == "fixed-angle":
         if moment is not None:
             raise ValueError("moment: the fixed-angle mode (paper P4) has no tilt; use mode='geometric'")
-        x, qi, qo, di, do, it, k_eff, delta = _fixed_angle(bearing, axial, radial, centrifugal, hold_axial,
+        x, qi, qo, di, do, it, k_eff, delta = _fixed_angle(bearing, axial_force, radial_force, centrifugal, hold_axial,
                                                            hertz_method, tol, max_iter)
         alpha = np.full(z, bearing.contact_angle)
         zeros = np.zeros(z)
@@ -449,23 +452,23 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
         x[:len(given)] = given
         max_iter = 0
         offsets, con, _ = model.solve_balls(x)
-    elif axial > 0 or hold_axial:
+    elif axial_force > 0 or hold_axial:
         try:
-            x[:3] = _fixed_angle(bearing, axial, radial, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+            x[:3] = _fixed_angle(bearing, axial_force, radial_force, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
         except (QuasiStaticError, ZeroDivisionError):
             # fixed angles cannot carry this radial load (or there is no free angle: zero
             # clearance), full grooves may: start centred and let the geometric balance move
             if bearing.contact_angle > DEEP_GROOVE_MAX_ANGLE:
                 raise
-            x[:3] = _centred_radial_start(bearing, radial, hertz_method)
-            x[2] = 0.0 if hold_axial else x[2] + _axial_shift_estimate(bearing, axial, hertz_method)
-    elif radial > 0 and bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE:
-        x[:3] = _centred_radial_start(bearing, radial, hertz_method)
+            x[:3] = _centred_radial_start(bearing, radial_force, hertz_method)
+            x[2] = 0.0 if hold_axial else x[2] + _axial_shift_estimate(bearing, axial_force, hertz_method)
+    elif radial_force > 0 and bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE:
+        x[:3] = _centred_radial_start(bearing, radial_force, hertz_method)
     free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])
-    target = np.concatenate([[radial, 0.0, axial], moment if moment is not None else [0.0, 0.0]])
+    target = np.concatenate([[radial_force, 0.0, axial_force], moment if moment is not None else [0.0, 0.0]])
     length = bearing.pitch_radius  # moments scaled to forces
     steps = np.array([1e-9, 1e-9, 1e-9, 1e-9 / length, 1e-9 / length])
-    scale = max(axial, radial, 1.0, *(abs(m) / length for m in (moment or ())))
+    scale = max(axial_force, radial_force, 1.0, *(abs(m) / length for m in (moment or ())))
     state = {"offsets": None}
 
     def race_residual(xx, keep=False):
@@ -503,7 +506,7 @@ def solve_load_distribution(bearing: Bearing, axial: float = 0.0, radial: float 
     else:
         if max_iter == 0:  # prescribed displacement: nothing to balance
             return _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, 0)
-        hint = " (radial load alone: give an axial force or hold_axial=True)" if axial == 0 else ""
+        hint = " (radial load alone: give an axial force or hold_axial=True)" if axial_force == 0 else ""
         raise QuasiStaticError(f"geometric Newton–Raphson did not converge in {max_iter} iterations; "
                                f"force residual {history[-1]:.3g} N{hint}")
     return _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, it)

@@ -18,8 +18,8 @@ SKIDDING_START_PERCENT = 1.0
 AUTO_CONTINUATION_STEPS = 40
 
 
-def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm_o, sense, inner, displaced,
-                 contactLaw, ballDrag, cage=None):
+def steady_start(bearing, lubricant, initial_state, *, axial_force, radial_force, rpm_i, rpm_o, sense, inner,
+                 displaced, contact_law, ball_drag, cage=None):
     """The settled state to start from: the :class:`~exudyn_bearing.solvers.steady.SteadyState` for a
     pure axial load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` under combined
     or pure radial load (continued from the axial steady state, or from that at a seed axial
@@ -31,30 +31,31 @@ def steady_start(bearing, lubricant, initial_state, *, axial, radial, rpm_i, rpm
     if initial_state == "rolling":
         return None
     why = None
-    if axial <= 0 and radial == 0:
+    if axial_force <= 0 and radial_force == 0:
         why = "it needs a load"
     elif inner.kind not in ("driven", "free") or displaced:
         why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
         why = "the races turn at the same speed"
-    elif radial != 0 and sense < 0:
+    elif radial_force != 0 and sense < 0:
         why = "under radial load it needs a positive inner-race speed"
     if why is None:
-        seed = seed_axial_load(axial, radial)  # a pure radial load continues from a seed axial load
-        state = steady_state(bearing, lubricant, axial=seed, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
-                             drag=ballDrag, contact_law=contactLaw, cage=cage)
+        seed = seed_axial_load(axial_force, radial_force)  # a pure radial load continues from a seed axial load
+        state = steady_state(bearing, lubricant, axial_force=seed, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
+                             ball_drag=ball_drag, contact_law=contact_law, cage=cage)
         if not state.converged:
             why = state.message
-        elif radial == 0:
+        elif radial_force == 0:
             return state
         else:
             # a bearing that rolls under its axial load alone has one balance: the continuation
             # may take long steps; a skidding one is held to tenths of the axial load (its branch)
             rolls = state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT
-            combined = combined_load_state(bearing, lubricant, axial=axial, radial=radial, rpm=rpm_i, outer_rpm=rpm_o,
-                                           drag=ballDrag, contact_law=contactLaw, cage=cage, steady=state,
+            combined = combined_load_state(bearing, lubricant, axial_force=axial_force, radial_force=radial_force,
+                                           rpm=rpm_i, outer_rpm=rpm_o, ball_drag=ball_drag, contact_law=contact_law,
+                                           cage=cage, steady=state,
                                            max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None,
-                                           max_step=max(0.1 * seed, abs(radial) / 8) if rolls else None)
+                                           max_step=max(0.1 * seed, abs(radial_force) / 8) if rolls else None)
             if combined.converged:
                 return combined
             why = combined.message

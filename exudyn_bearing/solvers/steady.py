@@ -30,6 +30,7 @@ from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
 from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..renamed import accepts_old_names
 from ..results.outputs import cage_slip
 from ..results.records import inputs_record, units_of
 from .newton import damped_newton
@@ -196,8 +197,9 @@ class _OneBall:
         return np.concatenate([force / s, moment / (s * self.b.ball_radius), [axial / s]])
 
 
+@accepts_old_names
 def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
-                 axial: float, rpm: float, outer_rpm: float = 0.0, drag: BallDrag | None = REFERENCE_DRAG,
+                 axial_force: float, rpm: float, outer_rpm: float = 0.0, ball_drag: BallDrag | None = REFERENCE_DRAG,
                  contact_law: ContactLaw = ContactLaw(), cage=None, tol: float = 1e-8) -> SteadyState:
     """Steady rolling state under pure axial load (MODEL.md §12).
 
@@ -205,11 +207,11 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     ----------
     bearing, lubricant
         As for :func:`exudyn_bearing.simulate`.
-    axial : float
+    axial_force : float
         Axial load on the inner race, N (> 0).
     rpm, outer_rpm : float
         Inner- and outer-race speeds, rev/min.
-    drag : BallDrag or None
+    ball_drag : BallDrag or None
         Ball drag (MODEL.md §8); None: none.
     contact_law : ContactLaw
         Ball–race physics, as in the dynamic model.
@@ -229,14 +231,15 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     Raises
     ------
     ValueError
-        Non-finite or non-positive ``axial``, non-finite speeds.
+        Non-finite or non-positive ``axial_force``, non-finite speeds.
     """
     start = _time.perf_counter()
-    for name, value in (("axial", axial), ("rpm", rpm), ("outer_rpm", outer_rpm)):
+    for name, value in (("axial_force", axial_force), ("rpm", rpm), ("outer_rpm", outer_rpm)):
         if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
             raise ValueError(f"{name} must be a finite number, got {value!r}")
-    if axial <= 0:
-        raise ValueError(f"axial must be positive (the steady state is for an axially loaded bearing), got {axial!r}")
+    if axial_force <= 0:
+        raise ValueError("axial_force must be positive (the steady state is for an axially loaded bearing), "
+                         f"got {axial_force!r}")
     if rpm == outer_rpm:
         raise ValueError("rpm, outer_rpm: the races turn at the same speed; nothing rolls")
     w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
@@ -245,7 +248,7 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     law = replace(contact_law, fast_quadrature=False, quadrature_order=max(16, contact_law.quadrature_order))
     land = (0.0, 0.0) if cage is None else cage.centred_land_load(bearing, lubricant, w_i, w_o)
     pocket = (0.0, 0.01) if cage is None else (cage.pocket_friction, cage.pocket_slip_scale)
-    ball = _OneBall(bearing, lubricant, float(axial), w_i, w_o, drag, law, land, pocket)
+    ball = _OneBall(bearing, lubricant, float(axial_force), w_i, w_o, ball_drag, law, land, pocket)
     lo, hi = ball.bounds()
     # the free-angle axis first; at speed, where the gyroscopic moment turns the ball towards
     # outer-raceway control, the continuation from it can run away: then the exact
@@ -254,7 +257,7 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
     for axis in ("free", "outer", "inner"):
         ball.calls, ball.budget = 0, START_BUDGET
         try:
-            x = _start(bearing, ball, axial, rpm, outer_rpm, axis=axis)
+            x = _start(bearing, ball, axial_force, rpm, outer_rpm, axis=axis)
             root, trial_worst, _ = damped_newton(ball.residual, x, lo, hi, tol)
             on_bound = bool(np.any((root <= lo) | (root >= hi)))
             if trial_worst > tol or on_bound:  # the robust, slower search from the same start
@@ -269,15 +272,16 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
         if converged:
             break
     ball.budget = math.inf
-    inputs = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage, outer_rpm=outer_rpm)
+    inputs = inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage,
+                           outer_rpm=outer_rpm)
     if sol is None:  # every start ran out of its budget
-        return _result(bearing, ball, x, axial, rpm, w_i, w_o, math.inf, False,
+        return _result(bearing, ball, x, axial_force, rpm, w_i, w_o, math.inf, False,
                        f"no steady state found: every start took more than {START_BUDGET} evaluations",
                        _time.perf_counter() - start, inputs)
     message = "converged" if converged else (
         f"no steady state found (largest scaled residual {worst:.2g} > {tol:g}); below the load where "
         "traction holds the ball attitude the dynamic model may not settle either (a limit cycle)")
-    return _result(bearing, ball, sol, axial, rpm, w_i, w_o, worst, converged, message,
+    return _result(bearing, ball, sol, axial_force, rpm, w_i, w_o, worst, converged, message,
                    _time.perf_counter() - start, inputs)
 
 
@@ -288,7 +292,7 @@ def _start(bearing, ball, axial, rpm, outer_rpm, tol=1e-2, axis="free"):
     only) against the centrifugal force of the current cage speed, until the cage speed
     changes by less than ``tol`` (relative). Near gross sliding a joint solve from pure
     rolling can land on the wrong branch; this continuation does not."""
-    loads = solve_load_distribution(bearing, axial=axial, rpm=rpm, outer_rpm=outer_rpm)
+    loads = solve_load_distribution(bearing, axial_force=axial, rpm=rpm, outer_rpm=outer_rpm)
     a0 = bearing.contact_angle
     e = np.array([-math.sin(a0), 0.0, math.cos(a0)])
     c = np.array([bearing.pitch_radius + loads.ball_radius_offset[0], 0.0, loads.ball_axial_offset[0]])

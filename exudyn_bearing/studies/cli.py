@@ -31,7 +31,7 @@ def _loads(args) -> int:
 
     setup = _setup(args.bearing)
     result = solve_load_distribution(
-        setup.bearing, axial=args.axial, radial=args.radial, rpm=args.rpm,
+        setup.bearing, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
         moment=tuple(args.moment) if args.moment else None,
         mode="fixed-angle" if args.fixed_angle else "geometric", hold_axial=args.hold_axial,
         hertz_method="exact" if args.exact_hertz else "fit")
@@ -77,9 +77,9 @@ def _simulate(args) -> int:
             raise ValueError(f"--plot: the folder of {args.plot} does not exist ({folder})")
     settings = SolverSettings(solver=args.solver, step=args.step,
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
-    summary = simulate(setup.bearing, setup.lubricant, axial=args.axial, radial=args.radial, rpm=args.rpm,
-                       time=args.time, settings=settings, drag=None if args.no_drag else setup.drag, cage=setup.cage,
-                       contact_law=_law(args, quadrature_order=args.order),
+    summary = simulate(setup.bearing, setup.lubricant, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
+                       time=args.time, settings=settings, ball_drag=None if args.no_drag else setup.drag,
+                       cage=setup.cage, contact_law=_law(args, quadrature_order=args.order),
                        error_estimate=args.error_estimate, initial_state=args.start)
     data = summary.to_dict()
     if args.plot:
@@ -137,7 +137,8 @@ def _steady(args) -> int:
                          "load, N")
     setup = _setup(args.bearing)
     law, drag = _law(args), None if args.no_drag else setup.drag
-    state = steady_state(setup.bearing, setup.lubricant, axial=args.axial, rpm=args.rpm, drag=drag, contact_law=law,
+    state = steady_state(setup.bearing, setup.lubricant, axial_force=args.axial, rpm=args.rpm, ball_drag=drag,
+                         contact_law=law,
                          cage=setup.cage)
     data = state.to_dict()
     data["assumptions"] = assumptions_record(drag, law, setup.lubricant)
@@ -187,9 +188,9 @@ def _skid_map(args) -> int:
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
           f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
 
-    result = skidmap.skid_map(setup.bearing, setup.lubricant, axial=skidmap.parse_range(args.axial),
-                              radial=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
-                              time=args.time, drag=setup.drag, out=args.out, workers=args.workers, client=client,
+    result = skidmap.skid_map(setup.bearing, setup.lubricant, axial_force=skidmap.parse_range(args.axial),
+                              radial_force=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
+                              time=args.time, ball_drag=setup.drag, out=args.out, workers=args.workers, client=client,
                               progress=lambda line: print(line, flush=True),
                               contact_law=_law(args), refine=not args.no_refine, cage=setup.cage)
     print(result.markdown())
@@ -215,10 +216,10 @@ def _render(args) -> int:
 
         if not Path(args.gif).resolve().parent.is_dir():
             raise ValueError(f"--gif: the folder of {args.gif} does not exist")
-    files = render_run(args.out, axial=args.axial, radial=args.radial, rpm=args.rpm, time=args.time,
+    files = render_run(args.out, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
                        frames=args.frames, backend=args.backend, contact_law=_law(args),
                        bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif, cage=setup.cage,
-                       drag=setup.drag)
+                       ball_drag=setup.drag)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 
@@ -387,7 +388,8 @@ def main(argv=None) -> int:
     except BrokenPipeError:  # e.g. `loads ... | head`: the reader went away, nothing to report
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    except ValueError as err:
-        parser.exit(2, f"error: {err}\n")
+    except ValueError as err:  # the functions' input names as the options that set them
+        message = re.sub(r"\b(axial|radial)_force\b", r"--\1", str(err))
+        parser.exit(2, f"error: {message}\n")
     except RuntimeError as err:  # solver failures carry their own explanation
         parser.exit(1, f"error: {err}\n")

@@ -26,6 +26,7 @@ from ..bearing import BallDrag, Bearing
 from ..cage import CageModel
 from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..renamed import accepts_old_names
 from ..results.outputs import settled_label
 from ..results.records import inputs_record, units_of
 from ..solvers.steady import steady_state
@@ -96,8 +97,9 @@ def _run_point(args) -> dict:
         # (each run from scratch: at most twice the cost of the final one)
         length = point.time if point.time is not None else FIRST_TIME
         while True:
-            s = simulate(bearing, lubricant, axial=point.axial, radial=point.radial, rpm=point.rpm, time=length,
-                         drag=drag, contact_law=law, cage=cage,
+            s = simulate(bearing, lubricant, axial_force=point.axial, radial_force=point.radial, rpm=point.rpm,
+                         time=length,
+                         ball_drag=drag, contact_law=law, cage=cage,
                          settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
             if point.time is not None or s.settled or length >= MAX_TIME:
                 break
@@ -178,7 +180,7 @@ class SkidMap:
                 continue
 
             def slip(axial):
-                state = steady_state(self.bearing, lubricant, axial=axial, rpm=entry["rpm"], drag=drag,
+                state = steady_state(self.bearing, lubricant, axial_force=axial, rpm=entry["rpm"], ball_drag=drag,
                                      contact_law=contact_law, cage=cage)
                 return state.kinematic_cage_slip_percent if state.converged else None
 
@@ -199,7 +201,8 @@ class SkidMap:
             if confirm_time:
                 from ..simulation.runner import simulate
 
-                dyn = [simulate(self.bearing, lubricant, axial=a, rpm=entry["rpm"], time=confirm_time, drag=drag,
+                dyn = [simulate(self.bearing, lubricant, axial_force=a, rpm=entry["rpm"], time=confirm_time,
+                                ball_drag=drag,
                                 contact_law=contact_law, cage=cage).kinematic_cage_slip_percent for a in (lo, hi)]
                 # the dynamic model integrates the fast traction rule (within ~1e-2 of the
                 # accurate one the steady solver uses): its own crossing, interpolated (or
@@ -383,9 +386,10 @@ def _one_thread_per_worker():
     numba.set_num_threads(1)
 
 
+@accepts_old_names
 def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
-             axial=DEFAULT_AXIAL, radial=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
-             drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
+             axial_force=DEFAULT_AXIAL, radial_force=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
+             ball_drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
              progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True,
              cage: CageModel = CageModel()) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) and return a
@@ -416,34 +420,36 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     cage : CageModel
         The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
-    for name, values, low in (("axial", axial, 0.0), ("radial", radial, 0.0), ("rpm", rpm, None)):
+    checks = (("axial_force", axial_force, 0.0), ("radial_force", radial_force, 0.0), ("rpm", rpm, None))
+    for name, values, low in checks:
         bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
                or (low is not None and v < low)]
         if bad:
             raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}"
                              + (" (the axial load acts along the bearing axis; for a load the other way mount "
-                                "the bearing the other way round)" if name == "axial" else ""))
+                                "the bearing the other way round)" if name == "axial_force" else ""))
     if time is not None and not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
         raise ValueError(f"time must be a positive number of seconds (or None: until settled), got {time!r}")
     grid = [SkidPoint(float(a), float(r), float(n), None if time is None else float(time))
-            for n, r, a in itertools.product(rpm, radial, axial)]
+            for n, r, a in itertools.product(rpm, radial_force, axial_force)]
     if not grid:
-        raise ValueError("axial, radial, rpm: the grid is empty")
+        raise ValueError("axial_force, radial_force, rpm: the grid is empty")
     if any(p.axial == 0 and p.radial == 0 for p in grid):
-        raise ValueError("axial, radial: a point with neither load has no load distribution")
+        raise ValueError("axial_force, radial_force: a point with neither load has no load distribution")
     journal = Path(out) / "points.jsonl" if out is not None else None
     done = {}
     if journal is not None:
         journal.parent.mkdir(parents=True, exist_ok=True)
-        _check_inputs(journal.parent, bearing, lubricant, drag, contact_law, cage)
+        _check_inputs(journal.parent, bearing, lubricant, ball_drag, contact_law, cage)
         done = _load_done(journal)
     todo = [p for p in grid if p.key not in done]
     result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done],
-                     inputs=inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage))
+                     inputs=inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
+                                          cage=cage))
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()
-    jobs = [(p, bearing, lubricant, drag, contact_law, cage) for p in todo]
+    jobs = [(p, bearing, lubricant, ball_drag, contact_law, cage) for p in todo]
 
     def record(data):
         point = SkidPoint(**data)
@@ -482,7 +488,7 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     order = {p.key: i for i, p in enumerate(grid)}
     result.points.sort(key=lambda p: order[p.key])
     if refine:
-        result.refined = result.refine_thresholds(lubricant, drag, contact_law, cage=cage)
+        result.refined = result.refine_thresholds(lubricant, ball_drag, contact_law, cage=cage)
         if progress:
             for t in result.refined:
                 if "bracket" in t:
