@@ -265,7 +265,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
                                            params.conformity, params.race)[1]
             rate = np.zeros(n_con) if kin.rolling_rate is None else kin.rolling_rate
             phi_t, push, couple = contact_terms(
-                terms, load=load[idx], a=a, b=b, max_pressure=p_max[idx], r_x=r_x[idx],
+                terms, load=load[idx], a=a, b=b, max_pressure=p_max[idx], film=h_c, r_x=r_x[idx],
                 r_y=np.broadcast_to(r_y, (n_con,))[idx], slip=kin.slip_rolling[idx],
                 entrainment=kin.entrainment[idx], rolling_rate=rate[idx], ball_radius=0.5 * params.ball_diameter,
                 e_prime=params.effective_modulus, viscosity=lubricant.viscosity)

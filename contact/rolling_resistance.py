@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit, vectorize
 
 __all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment",

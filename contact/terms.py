@@ -27,9 +27,8 @@ from numba import njit
 
 from .kernel_cache import drop_stale
 
-# the stages call the term laws of other files: numba's cache is per file
-_HERE = Path(__file__).parent
-drop_stale(__file__, [_HERE / "terms.py", _HERE / "thermal_film.py", _HERE / "rolling_resistance.py"])
+# the stages call the term laws of other files (a new term's too): numba's cache is per file
+drop_stale(__file__, Path(__file__).parent.glob("*.py"))
 
 from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
 from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
@@ -54,6 +53,7 @@ class ContactState(NamedTuple):
     a: float  #: Hertz semi-axis across the rolling direction, m
     b: float  #: along it, m
     max_pressure: float  #: p_max, Pa
+    film: float  #: isothermal central film thickness h_c (P17, before any film factor), m
     r_x: float  #: reduced radius along the rolling direction, m
     r_y: float  #: across it, m
     slip: float  #: u_x, race − ball along t1, m/s
@@ -99,7 +99,7 @@ def contact_loads(terms, cs, phi):
 @njit(cache=True, error_model="numpy")
 def _contact_terms(terms, state, out):
     for i in range(state.load.shape[0]):
-        cs = ContactState(state.load[i], state.a[i], state.b[i], state.max_pressure[i], state.r_x[i],
+        cs = ContactState(state.load[i], state.a[i], state.b[i], state.max_pressure[i], state.film[i], state.r_x[i],
                           state.r_y[i], state.slip[i], state.entrainment[i], state.rolling_rate[i],
                           state.ball_radius[i], state.e_prime[i], state.viscosity[i])
         phi = film_factor(terms, cs)

@@ -3,8 +3,6 @@ the paper). A per-contact term (:mod:`contact.terms`), written once as a scalar 
 function that the compiled kernels call per contact and numpy calls as a ufunc."""
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit, vectorize
 

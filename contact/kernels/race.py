@@ -154,7 +154,7 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
         h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
             1.0 - 0.61 * math.exp(-0.73 * ell))
         rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
-        cs = ContactState(q, sa, sb, p_max, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
+        cs = ContactState(q, sa, sb, p_max, h, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
         phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1
         h = max(phi_t * h, min_film)
         fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
