@@ -32,10 +32,19 @@ Example::
     guide_clearance = 0.4e-3         # diametral land play, m
     land_width = 0.0                 # m; > 0: the land's oil-film friction torque
     pocket_friction = 0.0            # ball-pocket friction coefficient
+    [contact_law]                    # optional; ContactLaw() if absent (MODEL.md §6, §11)
+    traction = "crook-limited"       # or "crook" (the paper's law), "newtonian", "coulomb", "none"
+    rolling_resistance = false
+    thermal_film = false
+
+A function that takes a ``bearing`` takes a bearing file too — the :class:`BearingFile`
+or its path — and then every part the file gives (lubricant, drag, cage, contact law)
+unless that part is passed explicitly (:class:`FileOr`, :func:`file_inputs`).
 """
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -44,12 +53,13 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
+from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing, Material
 from .cage import CageModel
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
-__all__ = ["BearingFile", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
+__all__ = ["BearingFile", "FileOr", "file_inputs", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
 
 
 @dataclass(frozen=True)
@@ -60,17 +70,67 @@ class BearingFile:
     lubricant: Lubricant = REFERENCE_LUBRICANT
     drag: BallDrag = REFERENCE_DRAG
     cage: CageModel = CageModel()
+    contact_law: ContactLaw = ContactLaw()
 
 
-_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage"}
+@dataclass(frozen=True)
+class FileOr:
+    """Default of an input a bearing file gives: the file's value where the ``bearing``
+    argument is a bearing file (or its path), else ``default`` (:func:`file_inputs`)."""
+
+    default: object
+    label: str
+
+    def __repr__(self) -> str:
+        return f"<the bearing file's, else {self.label}>"
+
+
+#: the BearingFile field of each input name (the builder's and the functions')
+_FILE_FIELDS = {"lubricant": "lubricant", "ball_drag": "drag", "ballDrag": "drag", "cage": "cage",
+                "contact_law": "contact_law", "contactLaw": "contact_law"}
+
+
+def file_inputs(bearing, **inputs):
+    """(the Bearing, (values in the order given)) of a function's ``bearing`` argument and of its ``inputs``
+    a bearing file may give (``lubricant``, ``ball_drag``/``ballDrag``, ``cage``,
+    ``contact_law``/``contactLaw``). ``bearing`` a :class:`Bearing`, a :class:`BearingFile` or
+    a bearing file's path; an input left at its :class:`FileOr` default takes the file's
+    part (or, without a file, the default), one passed explicitly wins."""
+    setup = None
+    if isinstance(bearing, (str, os.PathLike)):
+        try:
+            setup = load_bearing(bearing)
+        except OSError as err:
+            raise ValueError(f"bearing: cannot read the bearing file {str(bearing)!r} ({err.strerror or err}); "
+                             "give a Bearing, a BearingFile or a bearing file's path") from None
+    elif isinstance(bearing, BearingFile):
+        setup = bearing
+    values = []
+    for name, value in inputs.items():  # (keywords keep their order)
+        if isinstance(value, FileOr):
+            value = value.default if setup is None else getattr(setup, _FILE_FIELDS[name])
+        values.append(value)
+    return (bearing if setup is None else setup.bearing), tuple(values)
+
+
+#: the defaults of the functions' inputs that a bearing file gives
+FILE_LUBRICANT = FileOr(REFERENCE_LUBRICANT, "REFERENCE_LUBRICANT")
+FILE_DRAG = FileOr(REFERENCE_DRAG, "REFERENCE_DRAG")
+FILE_CAGE = FileOr(CageModel(), "CageModel()")
+FILE_LAW = FileOr(ContactLaw(), "ContactLaw()")
+
+_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law"}
 #: [cage] keys whose values are words, not numbers
 _CAGE_WORDS = {"kind", "guidance"}
+#: [contact_law] keys whose values are words, and those that are true or false
+_LAW_WORDS = {"traction", "hertz_method"}
+_LAW_FLAGS = {"spin_moment", "fast_quadrature", "film_elasticity", "compiled", "rolling_resistance", "thermal_film"}
 _BEARING_KEYS = {"balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
                  "inner_groove_radius", "outer_groove_radius", "contact_angle", "diametral_clearance",
                  "ball_mass"}
 
 
-def _table(data: dict, name: str, allowed: set[str], words=frozenset()) -> dict:
+def _table(data: dict, name: str, allowed: set[str], words=frozenset(), flags=frozenset()) -> dict:
     table = data.get(name, {})
     if not isinstance(table, dict):
         raise ValueError(f"[{name}] must be a table")
@@ -82,6 +142,9 @@ def _table(data: dict, name: str, allowed: set[str], words=frozenset()) -> dict:
         if key in words:
             if not isinstance(value, str):
                 raise ValueError(f"{name}.{key} must be a string, got {value!r}")
+        elif key in flags:
+            if not isinstance(value, bool):
+                raise ValueError(f"{name}.{key} must be true or false, got {value!r}")
         elif isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"{name}.{key} must be a number, got {value!r}")
     return dict(table)
@@ -146,7 +209,14 @@ def loads_bearing(text: str) -> BearingFile:
             cage = CageModel(**table)
         except ValueError as err:
             raise ValueError(f"[cage] {err}") from None
-    return BearingFile(bearing, lubricant, drag, cage)
+    law = ContactLaw()
+    if "contact_law" in data:
+        table = _table(data, "contact_law", {f.name for f in fields(ContactLaw)}, _LAW_WORDS, _LAW_FLAGS)
+        try:
+            law = ContactLaw(**table)
+        except ValueError as err:
+            raise ValueError(f"[contact_law] {err}") from None
+    return BearingFile(bearing, lubricant, drag, cage, law)
 
 
 def load_bearing(path) -> BearingFile:
@@ -162,7 +232,8 @@ def _section(name: str, obj) -> str:
             continue
         if value is None:
             raise ValueError(f"{name}.{f.name} = None has no TOML form (its default is {f.default!r})")
-        lines.append(f"{f.name} = " + (f'"{value}"' if isinstance(value, str) else repr(value)))
+        text = f'"{value}"' if isinstance(value, str) else (str(value).lower() if isinstance(value, bool) else repr(value))
+        lines.append(f"{f.name} = {text}")
     return "\n".join(lines)
 
 
@@ -177,7 +248,8 @@ def _degrees_exact(angle: float) -> float:
 
 
 def dumps_bearing(setup: BearingFile | Bearing) -> str:
-    """TOML text for a bearing (and lubricant, drag, and a cage other than the default).
+    """TOML text for a bearing (and lubricant, drag, and a cage and contact law other than the
+    defaults).
 
     :func:`loads_bearing` inverts it exactly, except that a free contact angle that no
     float number of degrees maps onto (about 1 in 10 arbitrary radian values) comes back
@@ -199,6 +271,8 @@ def dumps_bearing(setup: BearingFile | Bearing) -> str:
     text += _section("lubricant", setup.lubricant) + "\n\n" + _section("drag", setup.drag) + "\n"
     if setup.cage != CageModel():
         text += "\n" + _section("cage", setup.cage) + "\n"
+    if setup.contact_law != ContactLaw():
+        text += "\n" + _section("contact_law", setup.contact_law) + "\n"
     return text
 
 

@@ -25,7 +25,8 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
-from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
+from ..presets import REFERENCE_BEARING
 from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_rows, node_state,
                      race_adapter, ring_inertia)
 from ..results.records import inputs_record
@@ -180,12 +181,13 @@ def _check_force(name, value):
     return lambda t, v=float(value): v
 
 
-def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT,
+def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFERENCE_BEARING,
+                                lubricant: Lubricant = FILE_LUBRICANT,
                                 *, innerRace: Race | None = None, outerRace: Race | None = None,
                                 axialForce: float = 0.0, radialForce: float = 0.0,
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
-                                contactLaw: ContactLaw = ContactLaw(), cage: CageModel = CageModel(),
-                                ballDrag: BallDrag | None = REFERENCE_DRAG, innerRaceDisplacement=None,
+                                contactLaw: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE,
+                                ballDrag: BallDrag | None = FILE_DRAG, innerRaceDisplacement=None,
                                 initialControl: str = "auto", initialState: str = "auto",
                                 recordStates: bool = True, show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
@@ -194,9 +196,12 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     Parameters
     ----------
     mbs : exudyn.MainSystem
-    bearing : Bearing
-        Geometry and materials (default: the paper's reference bearing).
+    bearing : Bearing, BearingFile or path
+        Geometry and materials (default: the paper's reference bearing). A bearing file
+        (:func:`~exudyn_bearing.bearingfile.load_bearing` or its path) also gives the
+        lubricant, ball drag, cage and contact law, each unless passed here explicitly.
     lubricant : contact.lubricant.Lubricant
+        Default: the bearing file's, else the reference oil.
     innerRace, outerRace : Race
         See :mod:`exudyn_bearing.races`; defaults ``Driven(1800 rpm)`` and ``Fixed()``.
     axialForce, radialForce : float or callable
@@ -207,12 +212,14 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     position, rotationMatrix
         Bearing frame in global coordinates; its third column is the bearing axis.
     contactLaw : contact.ballrace.ContactLaw
-        Normal, traction and spin-moment physics of the ball–race contacts.
+        Normal, traction and spin-moment physics of the ball–race contacts (default: the
+        bearing file's, else ``ContactLaw()``).
     cage : CageModel
-        Rigid cage (default: centred by the outer race land, 0.4 mm diametral play),
-        the paper's spring chain, or none.
+        Rigid cage (default: the bearing file's, else centred by the outer race land, 0.4 mm
+        diametral play), the paper's spring chain, or none.
     ballDrag : BallDrag or None
-        Sphere drag on the balls' orbital motion (MODEL.md §8); None: off.
+        Sphere drag on the balls' orbital motion (MODEL.md §8; default: the bearing file's,
+        else fully flooded); None: off.
     innerRaceDisplacement : (dx, dy, dz), optional
         Start a created (``Driven``/``Free``) inner race displaced by this much from the
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
@@ -253,6 +260,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing = REFERENCE_BEARING, lubri
     import exudyn as exu
     import exudyn.graphics as graphics
     from exudyn.utilities import InertiaSphere, ObjectGenericODE2, RigidBodyInertia, SensorUserFunction
+
+    bearing, (lubricant, contactLaw, cage, ballDrag) = file_inputs(bearing, lubricant=lubricant, contactLaw=contactLaw,
+                                                                   cage=cage, ballDrag=ballDrag)
 
     if not isinstance(bearing, Bearing):
         raise ValueError(f"bearing must be a Bearing, got {type(bearing).__name__}")

@@ -12,10 +12,11 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from ..bearing import BallDrag, Bearing
+from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
 from ..cage import CageModel
 from ..errors import BearingSimulationError
 from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
-from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..presets import REFERENCE_BEARING
 from ..races import node_rows
 from ..renamed import accepts_old_names
 from ..results.records import assumptions_record, inputs_record, units_of
@@ -386,10 +387,10 @@ class SimulationSummary:
 
 
 @accepts_old_names
-def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT, *, axial_force: float = 1300.0,
-             radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
-             settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = REFERENCE_DRAG,
-             contact_law: ContactLaw = ContactLaw(), cage: CageModel = CageModel(), error_estimate: bool = False,
+def simulate(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant=FILE_LUBRICANT, *,
+             axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
+             settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FILE_DRAG,
+             contact_law: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE, error_estimate: bool = False,
              initial_state: str = "auto") -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
@@ -399,12 +400,17 @@ def simulate(bearing: Bearing = REFERENCE_BEARING, lubricant=REFERENCE_LUBRICANT
     |x(h) - x(h/2)|: for these second-order (or adaptive) solvers a Richardson-type
     estimate of the error of the reported run (its error is ~4/3 of it at order 2).
     ``initial_state``: ``CreateAngularContactBearing(initialState=...)`` — 'auto' starts a
-    pure axial load from its steady rolling state (MODEL.md §12).
+    pure axial load from its steady rolling state (MODEL.md §12). ``bearing`` may be a
+    bearing file or its path: its lubricant, ball drag, cage and contact law are used unless
+    passed explicitly.
     """
     import exudyn as exu
 
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Fixed
+
+    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
+                                                                     contact_law=contact_law, cage=cage)
 
     if not (math.isfinite(time) and time > 0):
         raise ValueError(f"time must be positive, got {time!r}")

@@ -29,7 +29,8 @@ from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
-from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..bearingfile import FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, FileOr, file_inputs
+from ..presets import REFERENCE_BEARING
 from ..renamed import accepts_old_names
 from ..results.outputs import cage_slip
 from ..results.records import inputs_record, units_of
@@ -198,15 +199,16 @@ class _OneBall:
 
 
 @accepts_old_names
-def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
-                 axial_force: float, rpm: float, outer_rpm: float = 0.0, ball_drag: BallDrag | None = REFERENCE_DRAG,
-                 contact_law: ContactLaw = ContactLaw(), cage=None, tol: float = 1e-8) -> SteadyState:
+def steady_state(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant: Lubricant = FILE_LUBRICANT, *,
+                 axial_force: float, rpm: float, outer_rpm: float = 0.0, ball_drag: BallDrag | None = FILE_DRAG,
+                 contact_law: ContactLaw = FILE_LAW, cage=FileOr(None, "None"), tol: float = 1e-8) -> SteadyState:
     """Steady rolling state under pure axial load (MODEL.md §12).
 
     Parameters
     ----------
     bearing, lubricant
-        As for :func:`exudyn_bearing.simulate`.
+        As for :func:`exudyn_bearing.simulate` (a bearing file, or its path, gives the
+        lubricant, ball drag, contact law and cage unless they are passed explicitly).
     axial_force : float
         Axial load on the inner race, N (> 0).
     rpm, outer_rpm : float
@@ -234,6 +236,8 @@ def steady_state(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = RE
         Non-finite or non-positive ``axial_force``, non-finite speeds.
     """
     start = _time.perf_counter()
+    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
+                                                                     contact_law=contact_law, cage=cage)
     for name, value in (("axial_force", axial_force), ("rpm", rpm), ("outer_rpm", outer_rpm)):
         if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
             raise ValueError(f"{name} must be a finite number, got {value!r}")

@@ -79,7 +79,7 @@ def _simulate(args) -> int:
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup.bearing, setup.lubricant, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
                        time=args.time, settings=settings, ball_drag=None if args.no_drag else setup.drag,
-                       cage=setup.cage, contact_law=_law(args, quadrature_order=args.order),
+                       cage=setup.cage, contact_law=_law(args, setup, quadrature_order=args.order),
                        error_estimate=args.error_estimate, initial_state=args.start)
     data = summary.to_dict()
     if args.plot:
@@ -136,7 +136,7 @@ def _steady(args) -> int:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
     setup = _setup(args.bearing)
-    law, drag = _law(args), None if args.no_drag else setup.drag
+    law, drag = _law(args, setup), None if args.no_drag else setup.drag
     state = steady_state(setup.bearing, setup.lubricant, axial_force=args.axial, rpm=args.rpm, ball_drag=drag,
                          contact_law=law,
                          cage=setup.cage)
@@ -192,7 +192,7 @@ def _skid_map(args) -> int:
                               radial_force=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
                               time=args.time, ball_drag=setup.drag, out=args.out, workers=args.workers, client=client,
                               progress=lambda line: print(line, flush=True),
-                              contact_law=_law(args), refine=not args.no_refine, cage=setup.cage)
+                              contact_law=_law(args, setup), refine=not args.no_refine, cage=setup.cage)
     print(result.markdown())
     print(f"wrote {args.out}/" + ", ".join(result.files))
     if "skid_map.png" not in result.files:
@@ -217,19 +217,25 @@ def _render(args) -> int:
         if not Path(args.gif).resolve().parent.is_dir():
             raise ValueError(f"--gif: the folder of {args.gif} does not exist")
     files = render_run(args.out, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
-                       frames=args.frames, backend=args.backend, contact_law=_law(args),
+                       frames=args.frames, backend=args.backend, contact_law=_law(args, setup),
                        bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif, cage=setup.cage,
                        ball_drag=setup.drag)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 
 
-def _law(args, **kw):
-    """The ContactLaw of a command's --traction, --rolling-resistance and --thermal-film."""
-    from contact.ballrace import ContactLaw
+def _law(args, setup, **kw):
+    """The bearing file's ContactLaw (``setup``; ContactLaw() without a file) with what a
+    command's --traction, --rolling-resistance, --thermal-film (and ``kw`` not None) change."""
+    from dataclasses import replace
 
-    return ContactLaw(traction=args.traction, rolling_resistance=args.rolling_resistance,
-                      thermal_film=args.thermal_film, **kw)
+    changes = {k: v for k, v in kw.items() if v is not None}
+    if args.traction is not None:
+        changes["traction"] = args.traction
+    for flag in ("rolling_resistance", "thermal_film"):
+        if getattr(args, flag):
+            changes[flag] = True
+    return replace(setup.contact_law, **changes)
 
 
 #: the loads' help: units and sign conventions, the same in every command
@@ -255,14 +261,17 @@ def _join_negative_values(argv):
 
 
 def _traction_option(p) -> None:
-    p.add_argument("--traction", choices=TRACTION_MODELS, default=ContactLawDefaults.traction,
+    p.add_argument("--traction", choices=TRACTION_MODELS, default=None,
                    help="ball-race traction law (MODEL.md §6, §6a): crook-limited = Crook with the lubricant's "
-                        "limiting shear stress (default), crook = the paper's pure Crook law")
+                        "limiting shear stress, crook = the paper's pure Crook law (default: the bearing file's "
+                        "[contact_law], else crook-limited)")
     # the losses beyond the paper (MODEL.md §11), off by default
     p.add_argument("--rolling-resistance", action="store_true",
-                   help="hydrodynamic rolling resistance at each contact (MODEL.md §11b)")
+                   help="hydrodynamic rolling resistance at each contact (MODEL.md §11b; or the bearing file's "
+                        "[contact_law])")
     p.add_argument("--thermal-film", action="store_true",
-                   help="inlet-shear-heating reduction of the film thickness (MODEL.md §11e)")
+                   help="inlet-shear-heating reduction of the film thickness (MODEL.md §11e; or the bearing file's "
+                        "[contact_law])")
 
 
 class _DefaultsFormatter(argparse.HelpFormatter):
@@ -320,7 +329,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--step", type=float, default=None,
                    help="time step, s (default: 1e-4, less for small, stiff balls; docs/MODEL.md §10a)")
     p.add_argument("--output-step", type=float, default=5e-4, help="output period, s")
-    p.add_argument("--order", type=int, default=ContactLawDefaults.quadrature_order, help="traction quadrature order")
+    p.add_argument("--order", type=int, default=None,
+                   help="traction quadrature order (default: the bearing file's [contact_law], else "
+                        f"{ContactLawDefaults.quadrature_order})")
     _traction_option(p)
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
     p.add_argument("--json", action="store_true", help="print JSON")

@@ -23,6 +23,7 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
+from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
 from ..cage import CageModel
 from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
@@ -157,7 +158,7 @@ class SkidMap:
                             gyroscopic_minimum_axial=gyroscopic_minimum_axial(self.bearing, rpm)))
         return out
 
-    def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, drag: BallDrag | None = REFERENCE_DRAG,
+    def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, ball_drag: BallDrag | None = REFERENCE_DRAG,
                           contact_law: ContactLaw = ContactLaw(), level: float = 1.0,
                           tolerance: float = 0.04, confirm_time: float | None = 0.1,
                           cage: CageModel = CageModel()) -> list[dict]:
@@ -180,7 +181,7 @@ class SkidMap:
                 continue
 
             def slip(axial):
-                state = steady_state(self.bearing, lubricant, axial_force=axial, rpm=entry["rpm"], ball_drag=drag,
+                state = steady_state(self.bearing, lubricant, axial_force=axial, rpm=entry["rpm"], ball_drag=ball_drag,
                                      contact_law=contact_law, cage=cage)
                 return state.kinematic_cage_slip_percent if state.converged else None
 
@@ -202,7 +203,7 @@ class SkidMap:
                 from ..simulation.runner import simulate
 
                 dyn = [simulate(self.bearing, lubricant, axial_force=a, rpm=entry["rpm"], time=confirm_time,
-                                ball_drag=drag,
+                                ball_drag=ball_drag,
                                 contact_law=contact_law, cage=cage).kinematic_cage_slip_percent for a in (lo, hi)]
                 # the dynamic model integrates the fast traction rule (within ~1e-2 of the
                 # accurate one the steady solver uses): its own crossing, interpolated (or
@@ -387,11 +388,11 @@ def _one_thread_per_worker():
 
 
 @accepts_old_names
-def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERENCE_LUBRICANT, *,
+def skid_map(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant: Lubricant = FILE_LUBRICANT, *,
              axial_force=DEFAULT_AXIAL, radial_force=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
-             ball_drag: BallDrag | None = REFERENCE_DRAG, out=None, workers: int | None = None, client=None,
-             progress=print, contact_law: ContactLaw = ContactLaw(), refine: bool = True,
-             cage: CageModel = CageModel()) -> SkidMap:
+             ball_drag: BallDrag | None = FILE_DRAG, out=None, workers: int | None = None, client=None,
+             progress=print, contact_law: ContactLaw = FILE_LAW, refine: bool = True,
+             cage: CageModel = FILE_CAGE) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) and return a
     :class:`SkidMap`. Each point runs ``time`` s, or with ``time=None`` (default) until it
     settles (:meth:`BearingResults.settled`): 0.1 s, then 0.2, 0.4, ... s from the start,
@@ -420,6 +421,8 @@ def skid_map(bearing: Bearing = REFERENCE_BEARING, lubricant: Lubricant = REFERE
     cage : CageModel
         The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
+    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
+                                                                     contact_law=contact_law, cage=cage)
     checks = (("axial_force", axial_force, 0.0), ("radial_force", radial_force, 0.0), ("rpm", rpm, None))
     for name, values, low in checks:
         bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
