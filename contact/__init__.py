@@ -1,7 +1,11 @@
-"""Contact physics of ball bearings: pure numpy/scipy, vectorized over contacts, no Exudyn.
+"""Contact physics of ball bearings, no Exudyn: numpy/scipy vectorized over contacts, and the
+same physics compiled with numba for a whole bearing.
 
 Modules: :mod:`contact.geometry` (curvatures, groove torus), :mod:`contact.hertz`
 (elliptical Hertz contact), :mod:`contact.lubricant` (Barus viscosity),
 :mod:`contact.film` (Hamrock–Dowson film thickness), :mod:`contact.traction` (Crook
-thermal EHD traction and spin moment).
+thermal EHD traction and spin moment), :mod:`contact.ballrace` (a contact's forces),
+:mod:`contact.terms` (the per-contact terms: thermal film, rolling resistance — the
+extension point), :mod:`contact.cage` (pockets, spring chain, drag, land) and
+:mod:`contact.kernels` (the compiled kernels).
 """

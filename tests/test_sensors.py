@@ -37,3 +37,32 @@ def test_sensors_follow_the_run_and_cost_nothing_unless_added():
         assert data[name][-1, 1] == pytest.approx(series[at], rel=1e-9), name
     with pytest.raises(ValueError, match="outputs"):
         handle.AddSensors(mbs, outputs=("cageVelocity",))
+
+
+def test_plotted_sensors_say_what_they_are_and_their_unit(tmp_path):
+    """Exudyn's PlotSensor labels a user-function sensor 'UserFunction': PlotSensors puts the
+    output's name and unit on the axis and in the legend."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    mbs = exu.SystemContainer().AddSystem()
+    handle = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=1300.0, show=False)
+    sensors = handle.AddSensors(mbs, outputs=("kinematicCageSlip", "cageSlip", "cageSpeed"))
+    mbs.Assemble()
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.endTime = 0.002
+    ss.timeIntegration.numberOfSteps = 20
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.write = False
+    ss.solution.sensors.writePeriod = 5e-4
+    exu.SolveDynamic(mbs, ss)
+    _, _, ax, _ = handle.PlotSensors(mbs, sensors, ["kinematicCageSlip"], closeAll=True)
+    assert ax.get_ylabel() == "kinematic cage slip, %" and ax.get_xlabel() == "time, s"
+    assert [line.get_label() for line in ax.get_lines()] == ["kinematic cage slip (%)"]
+    _, _, ax, _ = handle.PlotSensors(mbs, sensors, ["kinematicCageSlip", "cageSlip"], closeAll=True)
+    assert ax.get_ylabel() == "%"
+    _, _, ax, _ = handle.PlotSensors(mbs, sensors, ["kinematicCageSlip", "cageSpeed"], closeAll=True)
+    assert ax.get_ylabel() == "% / rad/s"
+    with pytest.raises(ValueError, match="outputs"):
+        handle.PlotSensors(mbs, sensors, ["attitudeXZ"])

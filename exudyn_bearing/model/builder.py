@@ -42,6 +42,10 @@ __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
 #: Outputs :meth:`BearingHandle.AddSensors` can record.
 SENSOR_OUTPUTS = ("cageSpeed", "cageSlip", "kinematicCageSlip", "attitudeXZ", "attitudeYZ")
+#: what each output is and its unit (MODEL.md §7), for plot axes and legends
+SENSOR_LABELS = {"cageSpeed": ("cage speed", "rad/s"), "cageSlip": ("cage slip, the paper's P19", "%"),
+                 "kinematicCageSlip": ("kinematic cage slip", "%"), "attitudeXZ": ("ball attitude xz", "deg"),
+                 "attitudeYZ": ("ball attitude yz", "deg")}
 
 
 @dataclass
@@ -147,6 +151,23 @@ class BearingHandle:
             sensors[name] = mbs.AddSensor(SensorUserFunction(sensorUserFunction=user_function, storeInternal=storeInternal,
                                                              writeToFile=writeToFile, name=f"bearing_{name}", **kw))
         return sensors
+
+    def PlotSensors(self, mbs, sensors: dict, outputs=None, **kwargs):
+        """``mbs.PlotSensor`` of sensors from :meth:`AddSensors` (``outputs``: a subset of its
+        keys, default all) with what each is and its unit on the y axis and in the legend
+        (Exudyn labels a user-function sensor 'UserFunction'); ``kwargs`` go to
+        ``mbs.PlotSensor`` and win. Returns what it returns ([plt, fig, ax, line])."""
+        names = list(sensors) if outputs is None else list(outputs)
+        unknown = [n for n in names if n not in sensors]
+        if unknown or not names:
+            raise ValueError(f"outputs: choose from the sensors given, {list(sensors)!r}, got {names!r}")
+        units = {SENSOR_LABELS[n][1] for n in names}
+        y_label = (f"{SENSOR_LABELS[names[0]][0]}, {units.pop()}" if len(names) == 1 else
+                   ", ".join(sorted(units)) if len(units) == 1 else " / ".join(SENSOR_LABELS[n][1] for n in names))
+        options = dict(yLabel=y_label, labels=[f"{SENSOR_LABELS[n][0]} ({SENSOR_LABELS[n][1]})" for n in names],
+                       xLabel="time, s", components=0)
+        options.update(kwargs)
+        return mbs.PlotSensor(sensorNumbers=[sensors[n] for n in names], **options)
 
     def Results(self, mbs, stride: int = 1):
         """Bearing outputs per recorded step (:class:`exudyn_bearing.results.outputs.BearingResults`)."""
