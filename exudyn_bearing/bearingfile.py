@@ -59,7 +59,8 @@ from .bearing import BallDrag, Bearing, Material
 from .cage import CageModel
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
-__all__ = ["BearingFile", "FileOr", "file_inputs", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
+__all__ = ["BearingFile", "FileOr", "file_inputs", "load_bearing", "loads_bearing", "dumps_bearing",
+           "save_bearing"]
 
 
 @dataclass(frozen=True)
@@ -232,7 +233,10 @@ def _section(name: str, obj) -> str:
             continue
         if value is None:
             raise ValueError(f"{name}.{f.name} = None has no TOML form (its default is {f.default!r})")
-        text = f'"{value}"' if isinstance(value, str) else (str(value).lower() if isinstance(value, bool) else repr(value))
+        if isinstance(value, str):
+            text = f'"{value}"'
+        else:  # TOML writes true/false
+            text = str(value).lower() if isinstance(value, bool) else repr(value)
         lines.append(f"{f.name} = {text}")
     return "\n".join(lines)
 

@@ -311,6 +311,14 @@ def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
 
     assert steady_state(axial_force=lo, rpm=1800).kinematic_cage_slip_percent >= 1.0
     assert steady_state(axial_force=hi, rpm=1800).kinematic_cage_slip_percent < 1.0
+    # the steady states the bisection evaluated, which the figure draws: the grid's ends and
+    # the bracket's, the slip falling with the load through the 1 % level inside the bracket
+    curve = threshold["steady_curve"]
+    assert record["units"]["steady_curve"] == "[N, %]"
+    assert [1300.0, 3000.0] == [curve[0][0], curve[-1][0]] and [lo, hi] in [[a, b] for (a, _), (b, _) in
+                                                                          zip(curve, curve[1:])]
+    assert all(s1 > s2 for (_, s1), (_, s2) in zip(curve, curve[1:]))
+    assert dict(curve)[lo] >= 1.0 > dict(curve)[hi]
     assert threshold["dynamic_confirms"]
     assert abs(threshold["dynamic_minimum_axial"] - threshold["minimum_axial"]) <= 0.04 * lo
     assert "bisection" in threshold["note"]

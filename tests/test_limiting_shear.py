@@ -391,11 +391,11 @@ def test_paper_law_reproduces_the_plain_crook_call_exactly():
 
 @pytest.mark.parametrize("command", ["simulate", "skid-map", "render"])
 def test_cli_traction_option(command, monkeypatch, tmp_path):
-    """--traction on simulate, skid-map and render: default crook-limited, every model
-    accepted, the chosen law reaches the run (the run itself is replaced by a stub)."""
-    from exudyn_bearing.studies import cli, skidmap
-    from exudyn_bearing.model import graphics
+    """--traction on simulate, skid-map and render: default the bearing file's law, else
+    crook-limited; every model accepted, the chosen law reaches the run (the run itself is
+    replaced by a stub)."""
     from exudyn_bearing.simulation import runner
+    from exudyn_bearing.studies import cli, render, skidmap
 
     seen = []
 
@@ -408,11 +408,14 @@ def test_cli_traction_option(command, monkeypatch, tmp_path):
 
     monkeypatch.setattr(runner, "simulate", stub)
     monkeypatch.setattr(skidmap, "skid_map", stub)
-    monkeypatch.setattr(graphics, "render_run", stub)
+    monkeypatch.setattr(render, "render_run", stub)
     base = {"simulate": ["simulate", "--axial", "1300"], "skid-map": ["skid-map", "--out", str(tmp_path)],
             "render": ["render", "--out", str(tmp_path)]}[command]
     parser = cli.build_parser()
-    assert parser.parse_args(base).traction == "crook-limited"
+    assert parser.parse_args(base).traction is None  # the file's law, or ContactLaw()'s
+    with pytest.raises(Stop):
+        cli.main(base)
+    assert seen[-1].traction == "crook-limited"
     for model in ballrace.TRACTION_MODELS:
         with pytest.raises(Stop):
             cli.main(base + ["--traction", model])

@@ -66,7 +66,7 @@ def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
     real = sim.simulate
 
     def flaky(*args, **kwargs):
-        if kwargs["axial"] == 999.0:
+        if kwargs["axial_force"] == 999.0:
             raise sim.BearingSimulationError("ball 3 inner contact diverged")
         return real(*args, **kwargs)
 

@@ -18,7 +18,7 @@ UNITS = {
     "inner_max_pressure": "Pa", "outer_max_pressure": "Pa",
     "inner_race_shift": "m", "ball_orbit_radius": "m", "ball_axial_position": "m",
     "absolute_tolerance": "N", "relative_tolerance": "-", "reference_step": "s",
-    "minimum_axial": "N", "bracket": "N", "dynamic_minimum_axial": "N", "dynamic_slips": "%",
+    "minimum_axial": "N", "bracket": "N", "steady_curve": "[N, %]", "dynamic_minimum_axial": "N", "dynamic_slips": "%",
     "hirano_minimum_axial": "N", "gyroscopic_minimum_axial": "N",
     # the quasi-static load distribution (LoadDistribution.to_dict)
     "azimuth": "rad", "inner_contact_angle": "rad", "outer_contact_angle": "rad", "inner_deflection": "m",

@@ -180,10 +180,15 @@ class SkidMap:
                 out.append(entry)
                 continue
 
+            curve = []  # (axial N, steady kinematic slip %) of every converged evaluation
+
             def slip(axial):
                 state = steady_state(self.bearing, lubricant, axial_force=axial, rpm=entry["rpm"], ball_drag=ball_drag,
                                      contact_law=contact_law, cage=cage)
-                return state.kinematic_cage_slip_percent if state.converged else None
+                if not state.converged:
+                    return None
+                curve.append([axial, state.kinematic_cage_slip_percent])
+                return state.kinematic_cage_slip_percent
 
             lo, hi = bracket[0].axial, bracket[1].axial
             s_lo, s_hi = slip(lo), slip(hi)
@@ -197,7 +202,7 @@ class SkidMap:
                     break
                 lo, hi = (mid, hi) if s_mid >= level else (lo, mid)
             # (an unconverged midpoint stops the bisection early: the note gives the width reached)
-            refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi],
+            refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi], steady_curve=sorted(curve),
                            note=f"steady-state bisection to ±{100 * (hi - lo) / (hi + lo):.1f} %")
             if confirm_time:
                 from ..simulation.runner import simulate
@@ -279,8 +284,9 @@ class SkidMap:
 
     def plot(self, path) -> bool:
         """Kinematic cage slip against axial load per speed (log scale), the 1 % level, the
-        thresholds (refined ones with their brackets) and Hirano's load where it falls in
-        the range; False when matplotlib is missing."""
+        thresholds (refined ones with their brackets and the steady states the bisection
+        evaluated, through which the threshold's 1 % crossing runs) and Hirano's load where
+        it falls in the range; False when matplotlib is missing."""
         try:
             import matplotlib
             matplotlib.use("Agg")
@@ -308,6 +314,9 @@ class SkidMap:
                 if t and t["minimum_axial"] is not None:
                     if "bracket" in t:
                         ax.axvspan(*t["bracket"], color=line.get_color(), alpha=0.25, lw=0)
+                    if t.get("steady_curve"):  # what the refined threshold comes from, not the grid's chords
+                        ax.plot(*zip(*t["steady_curve"]), "d--", color=line.get_color(), ms=4, lw=0.8,
+                                label=f"{rpm:g} rpm: steady state of the bisection")
                     ax.axvline(t["minimum_axial"], color=line.get_color(), lw=1)
                     ax.annotate(f"{t['minimum_axial']:.0f} N", (t["minimum_axial"], 1.0), xytext=(4, 6),
                                 textcoords="offset points", color=line.get_color(), fontsize=8)
