@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from .newtonian import _spin_integral, newtonian_slope, newtonian_traction  # noqa: F401
-from .traction_accurate import _accurate_crook, rule_size
+from .traction_accurate import RuleParams, _accurate_crook, rule_size
 from .traction_fast import _fast_crook, fast_rule_size
 from .traction_law import Traction, _as_array, _lubricant_params, thermal_factor
 
@@ -148,19 +148,18 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
     elastic = None
     if film_modulus is not None:
         elastic = (kap, np.broadcast_to(ent, shape).reshape(-1))
+    rule = RuleParams(c_p, c1_coef, order, derivatives, lam_s, elastic)
     if fast:
         with np.errstate(over="ignore", invalid="ignore"):
-            res = _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives,
-                              lam_s, elastic)  # (4 or 13, n), rows contiguous
+            res = _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule)  # (4 or 13, n), rows contiguous
         bad = ~np.all(np.isfinite(res), axis=0)
         if bad.any():  # float32 overflow (extreme slip at high pressure): redo in float64
             i = np.flatnonzero(bad)
             el = None if elastic is None else (elastic[0], elastic[1][i])
-            res[:, i] = _accurate_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i], c_p, c1_coef,
-                                        order, derivatives, lam_s, el).T
+            res[:, i] = _accurate_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i],
+                                        rule._replace(elastic=el)).T
     else:
-        res = _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order,
-                              derivatives, lam_s, elastic).T.copy()
+        res = _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, rule).T.copy()
     jac = res[4:].T.reshape(shape + (3, 3)) if derivatives else None
     return Traction(res[0].reshape(shape), res[1].reshape(shape), res[2].reshape(shape),
                     res[3].reshape(shape), jac)

@@ -33,13 +33,25 @@ Measured against adaptive scipy integration the default order 16 gives relative 
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 
 from .film_elasticity import elastic_stress, series_factor
 from .traction_law import _gauss01, limit_shear, thermal_factor
 
-__all__ = ["rule_size"]
+__all__ = ["RuleParams", "rule_size"]
+
+
+class RuleParams(NamedTuple):
+    """What a traction rule needs besides the contacts' states (MODEL.md §6, §6a, §6b)."""
+
+    c_p: float  #: c_ηP, 1/Pa
+    c1_coef: float  #: c_ηT / (8 K_c), m/W: c1² = η c1_coef
+    order: int  #: quadrature order
+    derivatives: bool  #: also the Jacobian of (f_x, f_y, M_z) by (u_x, u_y, ω_s)
+    lam_s: float | None  #: Λ of the smooth limiting shear; None: none
+    elastic: tuple | None = None  #: (κ, ū (n,)) of the film's elastic compliance; None: none
 
 _TWO_PI = 2.0 * np.pi
 _EPS_BIG = 1.0e3  # "no near-singularity" distance for the angular grading
@@ -359,7 +371,7 @@ def _nodes(mode, A, idx, dirs, wdirs, a, b, pm, n_rad):
                          A["delta"][idx], dirs, wdirs, a, b, pm, n_rad)
 
 
-def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, c_p, c1_coef, derivatives, lam_s, elastic=None):
+def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, rule):
     """Moments of the Crook stress, smoothly limited to Λ p with ``lam_s`` = Λ (MODEL.md §6a),
     over the nodes (node arrays (k, M), contact arrays (k,)); ``elastic`` = (κ, a, b, ū) puts
     the film's elastic compliance G = κ p in series (MODEL.md §6b; no derivatives).
@@ -367,6 +379,7 @@ def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, c_p, c1_coef, derivatives, 
     Returns (k, 4) [fx, fy, mz, heat] or, with derivatives, (k, 13) with the row-major
     3×3 Jacobian appended.  With τ = g u and u = (u_x − ω y, u_y + ω x):
     f = (u_x S0 − ω Sy, u_y S0 + ω Sx), M_z = u_y Sx − u_x Sy + ω Sr, S• = ∬ g (1, x, y, r²)."""
+    c_p, c1_coef, _, derivatives, lam_s, elastic = rule
     eta = np.exp(c_p * p)
     eta *= eta_t[:, None]
     vx = ux[:, None] - om[:, None] * y
@@ -430,9 +443,11 @@ def _wsum(w, f):
 # ---------------------------------------------------------------------------------------
 # All contacts of a call
 # ---------------------------------------------------------------------------------------
-def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s, elastic=None):
-    """The accurate rule (module docstring) for validated flat arrays (n,); ``elastic`` =
-    (κ, ū (n,)) adds the film's elastic compliance (MODEL.md §6b)."""
+def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
+    """The accurate rule (module docstring) for validated flat arrays (n,) with the
+    :class:`RuleParams` ``rule``; its ``elastic`` = (κ, ū (n,)) adds the film's elastic
+    compliance (MODEL.md §6b)."""
+    c_p, c1_coef, order, derivatives, lam_s, elastic = rule
     n = ux.shape[0]
     live = (a > 0) & (b > 0)
     a_s = np.where(live, a, 1.0)
@@ -473,5 +488,5 @@ def _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, deriva
                                 n_rad)
             el = None if elastic is None else (elastic[0], a_s[idx], b_s[idx], elastic[1][idx])
             res[idx] = _integrate(x, y, W, p, ux[idx], uy[idx], om[idx], eta_t[idx], inv_h[idx],
-                                  c_p, c1_coef, derivatives, lam_s, el)
+                                  rule._replace(elastic=el))
     return res

@@ -141,13 +141,15 @@ def _fast_work(R, D, n):
     return work[1]
 
 
-def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivatives, lam_s, elastic=None):
-    """The fast rule for validated flat float64 arrays (n,).  Returns (4, n) [fx, fy, mz,
+def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
+    """The fast rule for validated flat float64 arrays (n,) with the
+    :class:`~contact.traction_accurate.RuleParams` ``rule``.  Returns (4, n) [fx, fy, mz,
     heat] or, with derivatives, (13, n) with the row-major Jacobian appended; ``elastic`` =
     (κ, ū (n,)) puts the film's elastic compliance in series (MODEL.md §6b, no derivatives).
 
     Nodes are laid out (R radial, D directions, n contacts), contacts innermost, so that
     per-ray arrays (D, n) broadcast over whole contiguous blocks."""
+    c_p, c1_coef, order, derivatives, lam_s, elastic = rule
     n = ux.shape[0]
     lo = np.minimum(a, b)
     if lo.min() <= 0.0:  # unloaded contacts: zero
@@ -156,11 +158,10 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order, derivative
         if i.size:
             el = None if elastic is None else (elastic[0], elastic[1][i])
             res[:, i] = _fast_crook(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], eta_t[i],
-                                    c_p, c1_coef, order, derivatives, lam_s, el)
+                                    rule._replace(elastic=el))
         return res
     if c_p * pm.max() > _FAST_LAMBDA_MAX[bool(derivatives)]:
-        return _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, c_p, c1_coef, order,
-                               derivatives, lam_s, elastic).T.copy()
+        return _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, rule).T.copy()
     tab = _fast_tables(order)
     R, D = tab["R"], tab["D"]
 
