@@ -58,7 +58,7 @@ def test_without_drag_the_cage_runs_at_the_pure_rolling_speed():
     pure-rolling (raceway-control) cage speed of each ball's own contact angles and spin
     axis, w_c = w_i r_A / (r_c [1 + cos(a_i - b)/cos(a_o - b)]), r_A = r_c - r cos a_i
     (MODEL.md §7; zero rolling slip at both contact centres, outer race fixed), to 0.05 %."""
-    res = run(3000.0, 0.1, drag=None).results
+    res = run(3000.0, 0.1, ball_drag=None).results
     assert res.settled()
     last = res.last()
     b = REFERENCE_BEARING
