@@ -10,6 +10,17 @@ from exudyn.utilities import SensorNode  # noqa: E402
 from exudyn_bearing import CreateAngularContactBearing, races  # noqa: E402
 
 
+def _solve(mbs, end_time, steps, write_period):
+    """Exudyn's own SolveDynamic, quiet, sensors written every ``write_period`` s."""
+    ss = exu.SimulationSettings()
+    ss.timeIntegration.endTime = end_time
+    ss.timeIntegration.numberOfSteps = steps
+    ss.timeIntegration.verboseMode = 0
+    ss.solution.file.write = False
+    ss.solution.sensors.writePeriod = write_period
+    exu.SolveDynamic(mbs, ss)
+
+
 def test_sensors_follow_the_run_and_cost_nothing_unless_added():
     mbs = exu.SystemContainer().AddSystem()
     handle = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=2200.0, radialForce=2000.0,
@@ -20,13 +31,7 @@ def test_sensors_follow_the_run_and_cost_nothing_unless_added():
     node = mbs.AddSensor(SensorNode(nodeNumber=handle.cageNode, storeInternal=True,
                                     outputVariableType=exu.OutputVariableType.AngularVelocity))
     mbs.Assemble()
-    ss = exu.SimulationSettings()
-    ss.timeIntegration.endTime = 0.005
-    ss.timeIntegration.numberOfSteps = 50
-    ss.timeIntegration.verboseMode = 0
-    ss.solution.file.write = False
-    ss.solution.sensors.writePeriod = 1e-3
-    exu.SolveDynamic(mbs, ss)
+    _solve(mbs, 0.005, 50, 1e-3)
     data = {name: np.asarray(mbs.GetSensorStoredData(s)) for name, s in sensors.items()}
     omega = np.asarray(mbs.GetSensorStoredData(node))
     np.testing.assert_allclose(data["cageSpeed"][:, 1], omega[:, 3], rtol=1e-9)  # bearing axis = global z
@@ -50,13 +55,7 @@ def test_plotted_sensors_say_what_they_are_and_their_unit(tmp_path):
     handle = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=1300.0, show=False)
     sensors = handle.AddSensors(mbs, outputs=("kinematicCageSlip", "cageSlip", "cageSpeed"))
     mbs.Assemble()
-    ss = exu.SimulationSettings()
-    ss.timeIntegration.endTime = 0.002
-    ss.timeIntegration.numberOfSteps = 20
-    ss.timeIntegration.verboseMode = 0
-    ss.solution.file.write = False
-    ss.solution.sensors.writePeriod = 5e-4
-    exu.SolveDynamic(mbs, ss)
+    _solve(mbs, 0.002, 20, 5e-4)
     _, _, ax, _ = handle.PlotSensors(mbs, sensors, ["kinematicCageSlip"], closeAll=True)
     assert ax.get_ylabel() == "kinematic cage slip, %" and ax.get_xlabel() == "time, s"
     assert [line.get_label() for line in ax.get_lines()] == ["kinematic cage slip (%)"]
