@@ -20,6 +20,7 @@ from .bearingfile import BearingFile, dumps_bearing, load_bearing, loads_bearing
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
+from .model.assembly import SettleShaft
 from .model.builder import BearingHandle, CreateAngularContactBearing
 from .presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
                       REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM, SPINDLE_40MM_BEARING)
@@ -36,7 +37,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     # building a scene (also mbs.CreateAngularContactBearing once the package is imported)
-    "CreateAngularContactBearing", "BearingHandle", "races", "run_solver", "SolverSettings", "RunInfo",
+    "CreateAngularContactBearing", "BearingHandle", "SettleShaft", "races", "run_solver", "SolverSettings", "RunInfo",
     # bearings, lubricants, physics options and presets
     "Bearing", "Material", "STEEL", "M50_STEEL", "Lubricant", "BallDrag", "CageModel", "ContactLaw",
     "REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM",

@@ -139,6 +139,28 @@ def node_state(mbs, node):
     return ref[:3] + init[:3], rot, init_t[:3], rot @ w_local
 
 
+#: the inverse of :data:`NODE_KINEMATICS`' rotation maps: rotation matrix -> coordinates
+NODE_PARAMETERS = {"RigidBodyRotVecLG": "RotationMatrix2RotationVector",
+                   "RigidBodyEP": "RotationMatrix2EulerParameters", "RigidBodyRxyz": "RotationMatrix2RotXYZ"}
+
+
+def move_body(mbs, node, shift, rotation=None) -> None:
+    """Move a rigid-body node's initial state by ``shift`` (global, m) and turn it by
+    ``rotation`` (global rotation matrix, applied before its present one), through its
+    initial coordinates; its reference and velocities stay."""
+    import exudyn.rigidBodyUtilities as rbu
+
+    kind = mbs.GetNode(node)["nodeType"]
+    ref = np.asarray(mbs.GetNodeParameter(node, "referenceCoordinates"), dtype=float)
+    init = np.asarray(mbs.GetNodeParameter(node, "initialCoordinates"), dtype=float).copy()
+    init[:3] += np.asarray(shift, dtype=float)
+    if rotation is not None:
+        _, rot, _, _ = node_state(mbs, node)
+        params = np.asarray(getattr(rbu, NODE_PARAMETERS[kind])(np.asarray(rotation) @ rot), dtype=float)
+        init[3:] = params - ref[3:]
+    mbs.SetNodeParameter(node, "initialCoordinates", init.tolist())
+
+
 def node_rows(mbs, nodes) -> np.ndarray:
     """Rows of the 6 ODE2 coordinates (displacement, rotation vector) of each of the
     Lie-group rigid-body ``nodes`` in the system vectors of an assembled ``mbs``, node by node."""

@@ -27,7 +27,7 @@ from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
 from ..presets import REFERENCE_BEARING
-from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, node_rows, node_state,
+from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, move_body, node_rows, node_state,
                      race_adapter, ring_inertia)
 from ..results.records import inputs_record
 from ..solvers.quasidynamic import AzimuthStates
@@ -202,10 +202,30 @@ def _check_force(name, value):
     return lambda t, v=float(value): v
 
 
+def _check_start_load(value, inner):
+    """None, or the (axial, radial) start load in N of an inner race on the user's body."""
+    if value is None:
+        return None
+    try:
+        axial, radial = (float(v) for v in value)
+    except (TypeError, ValueError):
+        raise ValueError(f"startLoad must be (axial, radial) in N, got {value!r}") from None
+    if not (math.isfinite(axial) and math.isfinite(radial) and axial >= 0 and radial >= 0):
+        raise ValueError(f"startLoad must be two finite non-negative forces (axial, radial) in N, got {value!r}; the "
+                         "axial one acts along the bearing axis (+z of the bearing frame)")
+    if inner.kind != "body":
+        raise ValueError("startLoad is the start load of an inner race on your body (races.OnBody); a Driven or "
+                         "Free inner race takes axialForce and radialForce")
+    if axial == 0 and radial == 0:
+        raise ValueError("startLoad: give a load (axial, radial) in N, or leave it out to start with the races "
+                         "where your bodies are")
+    return axial, radial
+
+
 def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFERENCE_BEARING,
                                 lubricant: Lubricant = FILE_LUBRICANT,
                                 *, innerRace: Race | None = None, outerRace: Race | None = None,
-                                axialForce: float = 0.0, radialForce: float = 0.0,
+                                axialForce: float = 0.0, radialForce: float = 0.0, startLoad=None,
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
                                 contactLaw: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE,
                                 ballDrag: BallDrag | None = FILE_DRAG, innerRaceDisplacement=None,
@@ -230,6 +250,15 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         function of time t in s (load steps, gusts): axial along +bearing axis (loading the
         inner contacts), radial along the bearing frame's first axis. The initial state
         balances the values at t = 0.
+    startLoad : (axial, radial), optional
+        For an inner race on your body (``races.OnBody``), whose load you apply to that
+        body: the load this bearing carries at the start, N, in the directions of
+        ``axialForce`` and ``radialForce``. The bearing starts settled for it, as a created
+        race under those forces would, and moves your body by the bearing's deflection
+        under it (micrometres; its initial coordinates). Not applied. Without it, an
+        ``OnBody`` bearing starts from the balance of its balls with the races where your
+        bodies are (:func:`~exudyn_bearing.solvers.quasidynamic.pose_state`): place a shaft on
+        several bearings first with :func:`~exudyn_bearing.model.assembly.SettleShaft`.
     position, rotationMatrix
         Bearing frame in global coordinates; its third column is the bearing axis.
     contactLaw : contact.ballrace.ContactLaw
@@ -307,6 +336,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     if loaded and (inner.kind not in ("driven", "free") or inner.fixed_translation):
         raise ValueError("axialForce/radialForce act on a Driven or Free inner race with free translation; "
                          "with other mounts load the body the race sits on")
+    start_load = _check_start_load(startLoad, inner)
     origin, frame = _check_frame(position, rotationMatrix)
     axis = frame[:, 2]
 
@@ -318,6 +348,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
             pos_node, rot_node, _, w_node = node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
             race_origin = pos_node + rot_node @ np.asarray(race.local_position)
             relative[:3] += sign * frame.T @ (race_origin - origin)
+            # the race axis in the bearing frame is ~ (theta_y, -theta_x, 1) for a small tilt theta
+            race_axis = frame.T @ rot_node @ np.asarray(race.local_rotation)[:, 2]
+            relative[3:] += sign * np.array([-race_axis[1], race_axis[0]])
             speed[name] = float(axis @ w_node)
     w_i, w_o = speed["inner"], speed["outer"]
     rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
@@ -338,8 +371,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     cage_speed = None
     # the quasi-static centrifugal force at each ball's own pure-rolling orbit (not the
     # nominal cage speed: 200 N would start 13.5 N out of radial balance on a 15 N load)
+    where = relative.copy()  # where the races are: a start load moves the user's body from there
+    if start_load is not None:
+        axial, radial = start_load
     for _ in range(20):
-        if loaded:
+        if loaded or start_load is not None:
             loads = solve_load_distribution(bearing, axial_force=axial, radial_force=radial, cage_speed=cage_speed,
                                             **speeds)
             relative[:3] = loads.displacement
@@ -362,10 +398,12 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         if cage_speed is not None and np.max(np.abs(orbit - cage_speed)) <= 1e-6 * np.max(orbit):
             break
         # one speed for a pure axial load (all balls alike), each ball's own otherwise
-        cage_speed = orbit if radial or not loaded else float(np.mean(orbit))
+        cage_speed = orbit if radial or not (loaded or start_load) else float(np.mean(orbit))
+    on_body = inner.kind == "body"
     steady = steady_start(bearing, lubricant, initialState, axial_force=axial, radial_force=radial, rpm_i=rpm_i,
                           rpm_o=rpm_o, sense=sense, inner=inner, displaced=innerRaceDisplacement is not None,
-                          contact_law=contactLaw, ball_drag=ballDrag, cage=cage)
+                          contact_law=contactLaw, ball_drag=ballDrag, cage=cage,
+                          pose=where if on_body and start_load is None else None)
     e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
     quasi = None
     if isinstance(steady, AzimuthStates):  # combined load: each ball in its own balance, one cage speed
@@ -389,6 +427,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         w_b = np.asarray(steady.ball_omega) * np.array([sense, 1.0, sense])
         omega_loc = w_b[0] * e_r + w_b[1] * e_psi + w_b[2] * e_z
         relative[:3] = (0.0, 0.0, steady.inner_race_shift)
+    if start_load is not None:  # the user's body to where the start state has its race
+        move_body(mbs, mbs.GetObject(inner.body)["nodeNumber"], frame @ (relative[:3] - where[:3]))
 
     # -- bodies -----------------------------------------------------------------------
     node_type = exu.NodeType.RotationRotationVector

@@ -31,7 +31,7 @@ from ..renamed import accepts_old_names
 from .newton import damped_newton
 from .steady import contact_constants, steady_state
 
-__all__ = ["AzimuthStates", "combined_load_state", "seed_axial_load"]
+__all__ = ["AzimuthStates", "combined_load_state", "pose_state", "seed_axial_load"]
 
 MICRON = 1e-6
 _E_Z = np.array([0.0, 0.0, 1.0])
@@ -53,12 +53,14 @@ class AzimuthStates:
     converged: bool
     message: str
     wall_time_s: float
+    #: inner race tilt (theta_x, theta_y) it was solved at, rad (:func:`pose_state`; zero otherwise)
+    tilt: tuple = (0.0, 0.0)
 
 
 class _Balance:
     """The balance equations of all balls, the cage and the inner race, vectorized."""
 
-    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial):
+    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial, pose=None):
         z = bearing.balls
         self.b, self.lub, self.law, self.z = bearing, lubricant, law, z
         self.land, self.applied = land, np.array([radial, 0.0, axial])
@@ -76,6 +78,17 @@ class _Balance:
         self.scale = np.concatenate([np.tile([self.force_scale, w_scale, w_scale, w_scale, MICRON, MICRON], z),
                                      [abs(bearing.cage_speed(w_i, w_o)) or 1.0], [MICRON] * 3])
         self.w_bounds = sorted((w_i, w_o))
+        # a prescribed inner-race pose (pose_state): its displacement replaces the race's force
+        # balance, and a small tilt theta moves each ball's inner groove centre by
+        # theta x (r_gi e_r + z_gi e_z), the first-order rigid rotation of the groove circle
+        self.pose, self.groove_shift = None, np.zeros((z, 3))
+        if pose is not None:
+            self.pose = np.asarray(pose[:3], dtype=float)
+            (r_gi, z_gi), _ = bearing.groove_centres()
+            theta = np.array([pose[3], pose[4], 0.0])
+            shift = np.cross(theta, r_gi * self.e_r + z_gi * _E_Z)
+            self.groove_shift = np.stack([np.einsum("ij,ij->i", shift, self.e_r),
+                                          np.einsum("ij,ij->i", shift, self.e_p), shift[:, 2]], axis=1)
 
     def unpack(self, x):
         """(P (Z,), w_b (Z, 3), centres (Z, 3), w_c, race displacement (3,)) of the scaled unknowns."""
@@ -89,7 +102,7 @@ class _Balance:
         share of the inner race's force balance (Z, 3), bearing frame."""
         pocket, w_b, c, w_c, d = self.unpack(x)
         z = self.z
-        inner_origin = np.stack([self.e_r @ d, self.e_p @ d, np.full(z, d[2])], axis=1)
+        inner_origin = np.stack([self.e_r @ d, self.e_p @ d, np.full(z, d[2])], axis=1) + self.groove_shift
         origin = np.concatenate([inner_origin, np.zeros((z, 3))])
         both = np.concatenate([c, c])
         v = np.stack([np.zeros(2 * z), w_c * both[:, 0], np.zeros(2 * z)], axis=1)
@@ -106,12 +119,17 @@ class _Balance:
         torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * c[:, 0]))
         fi = f.force[:z]  # the inner race takes minus each ball's inner contact force
         race = -(fi[:, :1] * self.e_r + fi[:, 1:2] * self.e_p + fi[:, 2:] * _E_Z)
+        if self.pose is not None:  # the race is held at its pose: no force balance to share
+            race = np.zeros_like(race)
         return force / s, moment / (s * self.b.ball_radius), torque / (s * self.b.pitch_radius), race / s
 
     def residual(self, x):
         force, moment, torque, race = self.parts(x)
-        return np.concatenate([np.concatenate([force, moment], axis=1).ravel(), [torque],
-                               race.sum(axis=0) + self.applied / self.force_scale])
+        if self.pose is None:
+            tail = race.sum(axis=0) + self.applied / self.force_scale
+        else:
+            tail = (x[-3:] * self.scale[-3:] - self.pose) / MICRON
+        return np.concatenate([np.concatenate([force, moment], axis=1).ravel(), [torque], tail])
 
     def jacobian(self, x, step=1e-6):
         """Per-ball blocks (and their shares of the race rows) from one perturbation of the
@@ -186,6 +204,25 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
     if steady is None:
         steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,
                               contact_law=contact_law, cage=cage)
+    law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
+    make = lambda load: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, *load)  # noqa: E731
+    largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
+    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps,
+                                                 _load_text)
+    if message is None and axial_force <= 0 < abs(radial_force):
+        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force), 0.25 * seed,
+                                                     tol, left, _load_text)
+    converged = message is None
+    if balance is None:  # no load step: the steady state itself
+        balance = make((axial_force, 0.0))
+    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
+    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
+                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)
+
+
+def _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm):
+    """(law, w_i, w_o, the cage land's load, the unscaled unknowns of ``steady``): the
+    continuation's start, every ball in the steady state's balance."""
     # the accurate traction rule (smooth for the root finder); order 8 gives the order-16 cage
     # speed to 2e-5 (400 N + 300 N: 46.149 / 46.150 rad/s) at 60 % of its cost
     law = replace(contact_law, fast_quadrature=False, quadrature_order=8)
@@ -199,41 +236,95 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
     per[:, 5] = steady.ball_axial_position
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
-    make = lambda a, r: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, a, r)  # noqa: E731
-    largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
-    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps)
-    if message is None and axial_force <= 0 < abs(radial_force):
-        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force), 0.25 * seed,
-                                                     tol, left)
-    converged = message is None
-    if balance is None:  # no load step: the steady state itself
-        balance = make(axial_force, 0.0)
+    return law, w_i, w_o, land, y
+
+
+#: continuation steps from the steady state's pose to a prescribed one (:func:`pose_state`):
+#: the path is cut into at least this many, as the load path into tenths of the axial load
+POSE_STEPS = 10
+
+
+def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, ball_drag=None,
+               contact_law: ContactLaw = ContactLaw(), cage=None, tol: float = 1e-8,
+               max_steps: int | None = None) -> AzimuthStates:
+    """The quasi-dynamic state with the inner race held at ``pose`` (dx, dy, dz[, theta_x,
+    theta_y]) relative to the outer race, m and rad, bearing frame: every ball in its own
+    balance (MODEL.md §12a) between races that sit where a user's shaft and housing put them
+    (``races.OnBody``), instead of where a load balance puts them.
+
+    The load the races carry there comes from the quasi-static solution at the pose
+    (:func:`~exudyn_bearing.solvers.quasistatic.solve_load_distribution`); the continuation
+    starts from the steady state at its axial part (or at :data:`RADIAL_SEED_FRACTION` of its
+    radial part) and moves the inner race along the straight path to ``pose`` in at least
+    :data:`POSE_STEPS` steps; a tilt enters each ball's inner groove to first order.
+    ``converged`` False with a ``message`` where the balls carry nothing at the pose, or the
+    continuation stalls or runs out of ``max_steps``."""
+    from .quasistatic import solve_load_distribution
+
+    start = _time.perf_counter()
+    pose = np.asarray(pose, dtype=float)
+    if pose.shape == (3,):
+        pose = np.concatenate([pose, [0.0, 0.0]])
+    if pose.shape != (5,) or not np.all(np.isfinite(pose)):
+        raise ValueError(f"pose must be 3 or 5 finite numbers (m, rad), got {pose!r}")
+    z = bearing.balls
+
+    def failed(message):
+        return AzimuthStates(float("nan"), 2.0 * np.pi * np.arange(z) / z, np.full(z, np.nan), np.full(z, np.nan),
+                             np.full((z, 3), np.nan), np.full(z, np.nan), pose[:3].copy(), float("inf"), False,
+                             message, _time.perf_counter() - start, pose[3:].copy())
+
+    qs = solve_load_distribution(bearing, displacement=pose, rpm=rpm, outer_rpm=outer_rpm)
+    if not np.any(qs.inner_load > 0) or not np.any(qs.outer_load > 0):
+        return failed("the balls carry no load where the races are (give the bearing a start load, or place the "
+                      "shaft at its loaded position)")
+    applied = -np.asarray(qs.race_force)  # the load the race must be given to sit there
+    axial, radial = max(float(applied[2]), 0.0), float(math.hypot(applied[0], applied[1]))
+    seed = seed_axial_load(axial, radial)
+    steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,
+                          contact_law=contact_law, cage=cage)
+    if not steady.converged:
+        return failed(steady.message)
+    law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
+    radius = bearing.pitch_radius  # tilts travel the path as the arc they move at the pitch circle
+    scale = np.array([1.0, 1.0, 1.0, radius, radius])
+    make = lambda point: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, axial, radial,  # noqa: E731
+                                  pose=point / scale)
+    begin = np.array([0.0, 0.0, steady.inner_race_shift, 0.0, 0.0])
+    end = pose * scale
+    span = float(np.linalg.norm(end - begin))
+    y, worst, message, balance, _ = _continue(make, y, begin, end, span / POSE_STEPS, tol, max_steps,
+                                              lambda point: _pose_text(point, radius))
+    if balance is None:  # the steady state sits at the pose already
+        balance = make(end)
+    if message is not None:
+        return failed(message)
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)
+                         d.copy(), worst, True, "converged", _time.perf_counter() - start, pose[3:].copy())
 
 
-def _continue(make, y, load_from, load_to, largest, tol, steps_left):
-    """Continuation of the unscaled unknowns ``y`` along the straight load path from
-    ``load_from`` to ``load_to`` ((axial, radial), N; ``make(axial, radial)`` builds the
-    balance) in steps of at most ``largest`` N of load change, halved where Newton fails
-    (stalled below 1/100 of ``largest``), doubled back after an easy step, at most
-    ``steps_left`` steps (None: no limit). Returns (y, worst residual, None or why it
+def _continue(make, y, start, end, largest, tol, steps_left, describe):
+    """Continuation of the unscaled unknowns ``y`` along the straight path from ``start`` to
+    ``end`` (vectors of loads in N, or of a pose in m; ``make(point)`` builds the balance
+    there, ``describe(point)`` names it) in steps of at most ``largest`` (same unit), halved
+    where Newton fails (stalled below 1/100 of ``largest``), doubled back after an easy step,
+    at most ``steps_left`` steps (None: no limit). Returns (y, worst residual, None or why it
     stopped, the last balance, steps left)."""
-    a0, r0 = load_from
-    span = math.hypot(load_to[0] - a0, load_to[1] - r0)
+    start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    span = float(np.linalg.norm(end - start))
     if span == 0.0:
         return y, 0.0, None, None, steps_left
+    at = lambda t: start + t * (end - start)  # noqa: E731
     done, step, worst, balance = 0.0, min(1.0, largest / span), 0.0, None
     last = None  # (path parameter, state) of the step before, for the secant predictor
     while done < 1.0:
         if steps_left is not None:
             if steps_left <= 0:
-                return (y, worst, f"continuation stopped: its steps ran out at {_load_text(load_from, load_to, done)}",
-                        balance, steps_left)
+                return y, worst, f"continuation stopped: its steps ran out at {describe(at(done))}", balance, steps_left
             steps_left -= 1
         target = min(done + step, 1.0)
-        balance = make(a0 + target * (load_to[0] - a0), r0 + target * (load_to[1] - r0))
+        balance = make(at(target))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
         # a step that needs more iterations than this is better halved (a good one takes 3-6)
@@ -249,12 +340,16 @@ def _continue(make, y, load_from, load_to, largest, tol, steps_left):
             continue
         step *= 0.5
         if step < 0.01 * largest / span:
-            return y, worst, (f"no quasi-dynamic balance found beyond {_load_text(load_from, load_to, done)} (largest "
-                              f"scaled residual {worst:.2g} at {_load_text(load_from, load_to, target)})"), balance, steps_left
+            return y, worst, (f"no quasi-dynamic balance found beyond {describe(at(done))} (largest "
+                              f"scaled residual {worst:.2g} at {describe(at(target))})"), balance, steps_left
     return y, worst, None, balance, steps_left
 
 
-def _load_text(load_from, load_to, t):
-    a = load_from[0] + t * (load_to[0] - load_from[0])
-    r = load_from[1] + t * (load_to[1] - load_from[1])
-    return f"{a:g} N axial + {abs(r):g} N radial"
+def _load_text(load):
+    return f"{load[0]:g} N axial + {abs(load[1]):g} N radial"
+
+
+def _pose_text(point, radius):
+    d = point[:3] * 1e6
+    tilt = point[3:] / radius * 1e3
+    return (f"the inner race at ({d[0]:.3g}, {d[1]:.3g}, {d[2]:.3g}) um, tilt ({tilt[0]:.3g}, {tilt[1]:.3g}) mrad")

@@ -3,10 +3,31 @@ axial load, the quasi-dynamic state under combined or radial load, or None for p
 with raceway control (:mod:`exudyn_bearing.solvers.raceway`)."""
 from __future__ import annotations
 
-from .quasidynamic import combined_load_state, seed_axial_load
+from dataclasses import replace
+
+import numpy as np
+
+from .quasidynamic import AzimuthStates, combined_load_state, pose_state, seed_axial_load
 from .steady import steady_state
 
-__all__ = ["steady_start"]
+__all__ = ["steady_start", "mirrored"]
+
+#: the mirror y -> -y of the bearing frame on a pose (dx, dy, dz, theta_x, theta_y): the
+#: displacement is a vector, the tilt a pseudovector
+MIRROR_POSE = np.array([1.0, -1.0, 1.0, -1.0, 1.0])
+
+
+def mirrored(state: AzimuthStates) -> AzimuthStates:
+    """The mirror image (y -> -y of the bearing frame) of a quasi-dynamic state: the state of
+    the bearing turning the other way. Ball j sits where the mirror puts ball (Z - j) mod Z;
+    in its azimuth frame the angular velocity (a pseudovector) keeps its circumferential
+    component and flips the others, the pocket force (a vector) flips its circumferential one."""
+    z = len(state.azimuth)
+    j = (-np.arange(z)) % z
+    return replace(state, cage_speed=-state.cage_speed, orbit_radius=state.orbit_radius[j],
+                   axial_position=state.axial_position[j], omega=state.omega[j] * np.array([-1.0, 1.0, -1.0]),
+                   pocket_force=-state.pocket_force[j], displacement=state.displacement * MIRROR_POSE[:3],
+                   tilt=tuple(np.asarray(state.tilt) * MIRROR_POSE[3:]))
 
 
 #: kinematic cage slip of the axial load alone, %, above which the combined-load start's
@@ -19,22 +40,39 @@ AUTO_CONTINUATION_STEPS = 40
 
 
 def steady_start(bearing, lubricant, initial_state, *, axial_force, radial_force, rpm_i, rpm_o, sense, inner,
-                 displaced, contact_law, ball_drag, cage=None):
+                 displaced, contact_law, ball_drag, cage=None, pose=None):
     """The settled state to start from: the :class:`~exudyn_bearing.solvers.steady.SteadyState` for a
     pure axial load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` under combined
     or pure radial load (continued from the axial steady state, or from that at a seed axial
     load; 'auto' gives it :data:`AUTO_CONTINUATION_STEPS` steps), or None for the
     pure-rolling start ('rolling', or 'auto' where neither applies or converges). Loads given as functions of time start
-    from their values at t = 0, as the quasi-static start."""
+    from their values at t = 0, as the quasi-static start. An inner race on the user's body
+    (``races.OnBody``) starts from the state for its start load (the loads given here), or,
+    with ``pose`` (its (dx, dy, dz, theta_x, theta_y) relative to the outer race, m and rad),
+    from the quasi-dynamic balance with the races where they are
+    (:func:`~exudyn_bearing.solvers.quasidynamic.pose_state`)."""
     if initial_state not in ("auto", "steady", "rolling"):
         raise ValueError(f"initialState must be 'auto', 'steady' or 'rolling', got {initial_state!r}")
     if initial_state == "rolling":
         return None
     why = None
-    if axial_force <= 0 and radial_force == 0:
+    on_body = inner.kind == "body"
+    if pose is not None:
+        if rpm_i == sense * rpm_o:
+            why = "the races turn at the same speed"
+        else:
+            # a race turning backwards in the bearing frame is the mirror image of one turning forwards
+            pose = np.asarray(pose, dtype=float) * (MIRROR_POSE if sense < 0 else 1.0)
+            state = pose_state(bearing, lubricant, pose=pose, rpm=sense * rpm_i, outer_rpm=sense * rpm_o,
+                               ball_drag=ball_drag, contact_law=contact_law, cage=cage,
+                               max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None)
+            if state.converged:
+                return state if sense > 0 else mirrored(state)
+            why = state.message
+    elif axial_force <= 0 and radial_force == 0:
         why = "it needs a load"
-    elif inner.kind not in ("driven", "free") or displaced:
-        why = "it needs a Driven or Free inner race created by the bearing (no innerRaceDisplacement)"
+    elif not (inner.kind in ("driven", "free") or on_body) or displaced:
+        why = "it needs a Driven, Free or OnBody inner race (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
         why = "the races turn at the same speed"
     elif radial_force != 0 and sense < 0:
