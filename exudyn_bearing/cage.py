@@ -130,6 +130,18 @@ class CageModel:
         d = bearing.ball_diameter
         return self.mass or 8500.0 * 2 * np.pi * bearing.pitch_radius * (0.3 * d) * d * 0.5
 
+    def land_seat(self, force) -> np.ndarray:
+        """Where a land-guided cage sits under the net radial ``force`` its pockets put on it
+        (bearing frame, N): on its land in that direction, pressed in by force / stiffness
+        (:func:`contact.cage.land_forces`), m; the centre for a cage without a land or
+        without a force. Under combined load the pockets push the cage there within a few
+        milliseconds (0.2 mm in 7 ms on the reference bearing at 2.8 kN + 0.85 kN)."""
+        radial = np.array([force[0], force[1], 0.0], dtype=float)
+        size = float(np.linalg.norm(radial))
+        if not self.guided or size == 0.0:
+            return np.zeros(3)
+        return radial / size * (0.5 * self.guide_clearance + size / self.guide_stiffness)
+
     @property
     def guided(self) -> bool:
         """A rigid cage centred by a race land."""

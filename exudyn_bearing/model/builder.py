@@ -405,7 +405,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                           contact_law=contactLaw, ball_drag=ballDrag, cage=cage,
                           pose=where if on_body and start_load is None else None)
     e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)
-    quasi = None
+    quasi, cage_offset = None, np.zeros(3)
     if isinstance(steady, AzimuthStates):  # combined load: each ball in its own balance, one cage speed
         quasi, steady = steady, None
         c_loc = quasi.orbit_radius[:, None] * e_r + quasi.axial_position[:, None] * e_z
@@ -415,7 +415,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
             # nothing, and the first steps would start with the balls ringing in their pockets
             p = quasi.pocket_force
             s = -np.sign(p) * (0.5 * cage.clearance + np.abs(p) / cage.stiffness)
-            c_loc = c_loc + s[:, None] * e_psi
+            cage_offset = np.asarray(quasi.cage_offset, dtype=float)
+            # the pockets move with the cage: each ball by the pocket's circumferential shift
+            c_loc = c_loc + (s + e_psi @ cage_offset)[:, None] * e_psi
         w_c = np.full(z, quasi.cage_speed)
         omega_loc = quasi.omega[:, :1] * e_r + quasi.omega[:, 1:2] * e_psi + quasi.omega[:, 2:] * e_z
         relative[:3] = quasi.displacement
@@ -437,7 +439,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                      graphics.Basis(length=1.3 * bearing.ball_radius)] if show else []
     for j in range(z):
         c = origin + frame @ c_loc[j]
-        v = frame @ (w_c[j] * np.cross(e_z, c_loc[j]))
+        v = frame @ (w_c[j] * np.cross(e_z, c_loc[j] - cage_offset))  # with its pocket, about the cage centre
         d = mbs.CreateRigidBody(inertia=InertiaSphere(mass=bearing.ball_mass, radius=bearing.ball_radius),
                                 referencePosition=c, initialVelocity=v,
                                 initialAngularVelocity=frame @ omega_loc[j],
@@ -452,7 +454,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         mass = cage.mass_for(bearing)
         i_r, i_a = ring_inertia(mass, bearing.pitch_radius - thick / 2, bearing.pitch_radius + thick / 2, width)
         d = mbs.CreateRigidBody(inertia=RigidBodyInertia(mass=mass, inertiaTensor=np.diag([i_r, i_r, i_a])),
-                                referencePosition=origin, referenceRotationMatrix=frame,
+                                referencePosition=origin + frame @ cage_offset, referenceRotationMatrix=frame,
                                 initialAngularVelocity=float(np.mean(w_c)) * axis, nodeType=node_type,
                                 returnDict=True)
         cage_body, cage_node = d["bodyNumber"], d["nodeNumber"]

@@ -55,12 +55,14 @@ class AzimuthStates:
     wall_time_s: float
     #: inner race tilt (theta_x, theta_y) it was solved at, rad (:func:`pose_state`; zero otherwise)
     tilt: tuple = (0.0, 0.0)
+    #: cage centre, bearing frame, m: on its land where the pockets push it (CageModel.land_seat)
+    cage_offset: tuple = (0.0, 0.0, 0.0)
 
 
 class _Balance:
     """The balance equations of all balls, the cage and the inner race, vectorized."""
 
-    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial, pose=None):
+    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial, pose=None, cage_offset=None):
         z = bearing.balls
         self.b, self.lub, self.law, self.z = bearing, lubricant, law, z
         self.land, self.applied = land, np.array([radial, 0.0, axial])
@@ -78,6 +80,14 @@ class _Balance:
         self.scale = np.concatenate([np.tile([self.force_scale, w_scale, w_scale, w_scale, MICRON, MICRON], z),
                                      [abs(bearing.cage_speed(w_i, w_o)) or 1.0], [MICRON] * 3])
         self.w_bounds = sorted((w_i, w_o))
+        # the balls orbit with their pockets about the cage centre, which its land holds off
+        # the bearing's (MODEL.md §12a): its offset along each ball's e_r and e_psi
+        e = np.zeros(3) if cage_offset is None else np.asarray(cage_offset, dtype=float)
+        self.cage_offset = e
+        self.offset_r, self.offset_p = self.e_r @ e, self.e_p @ e
+        # a ball's spin changes along its orbit: I dw/dt = I w_c dw/dpsi in the orbiting frame
+        # (MODEL.md §12a), the derivative over the Z balls' azimuths taken spectrally
+        self.transport = self.inertia * spectral_derivative(z) / (self.force_scale * bearing.ball_radius)
         # a prescribed inner-race pose (pose_state): its displacement replaces the race's force
         # balance, and a small tilt theta moves each ball's inner groove centre by
         # theta x (r_gi e_r + z_gi e_z), the first-order rigid rotation of the groove circle
@@ -105,26 +115,34 @@ class _Balance:
         inner_origin = np.stack([self.e_r @ d, self.e_p @ d, np.full(z, d[2])], axis=1) + self.groove_shift
         origin = np.concatenate([inner_origin, np.zeros((z, 3))])
         both = np.concatenate([c, c])
-        v = np.stack([np.zeros(2 * z), w_c * both[:, 0], np.zeros(2 * z)], axis=1)
+        # v = w_c e_z x (c - e): circular motion about the cage centre e
+        arm = np.tile(np.stack([c[:, 0] - self.offset_r, -self.offset_p], axis=1), (2, 1))
+        v = np.stack([-w_c * arm[:, 1], w_c * arm[:, 0], np.zeros(2 * z)], axis=1)
         kin = ball_race_kinematics(both, v, np.concatenate([w_b, w_b]), origin, np.eye(3), np.zeros(3),
                                    self.race_omega, self.grooves, self.b.ball_radius, self.signs)
         f = ball_race_forces(kin, self.params, self.lub, self.law)
         force = f.force[:z] + f.force[z:]
-        force[:, 0] += self.b.ball_mass * c[:, 0] * w_c ** 2
+        force[:, :2] += self.b.ball_mass * w_c ** 2 * arm[:z]  # -m a = m w_c^2 (c - e)
         force[:, 1] += pocket
         if self.density > 0:
             force += cage_physics.drag_forces(c, v[:z], _E_Z, np.zeros(3), self.c_d, self.density, self.b.ball_radius)
         moment = f.moment[:z] + f.moment[z:] - self.inertia * w_c * np.cross(_E_Z, w_b)
         s = self.force_scale
-        torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * c[:, 0]))
+        torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * (c[:, 0] - self.offset_r)))
         fi = f.force[:z]  # the inner race takes minus each ball's inner contact force
         race = -(fi[:, :1] * self.e_r + fi[:, 1:2] * self.e_p + fi[:, 2:] * _E_Z)
         if self.pose is not None:  # the race is held at its pose: no force balance to share
             race = np.zeros_like(race)
         return force / s, moment / (s * self.b.ball_radius), torque / (s * self.b.pitch_radius), race / s
 
+    def orbit_inertia(self, x):
+        """Scaled moment each ball needs to change its spin along the orbit, (Z, 3)."""
+        _, w_b, _, w_c, _ = self.unpack(x)
+        return w_c * (self.transport @ w_b)
+
     def residual(self, x):
         force, moment, torque, race = self.parts(x)
+        moment = moment - self.orbit_inertia(x)
         if self.pose is None:
             tail = race.sum(axis=0) + self.applied / self.force_scale
         else:
@@ -155,8 +173,14 @@ class _Balance:
             jac[:, col] = (self.residual(xc) - base) / step
         pocket, _, c, _, _ = self.unpack(x)
         norm = self.force_scale * self.b.pitch_radius
+        # the orbit transport couples the balls' spins: its part of the spin columns exactly
+        # (the cage-speed column, differenced from the residual, has it already)
+        w_c = self.unpack(x)[3]
+        coupling = -w_c * self.transport * self.scale[1]
+        for i in range(3):
+            jac[rows[:, 3 + i][:, None], rows[:, 1 + i][None, :]] += coupling
         jac[6 * z] = 0.0
-        jac[6 * z, 0:6 * z:6] = -c[:, 0] * self.force_scale / norm
+        jac[6 * z, 0:6 * z:6] = -(c[:, 0] - self.offset_r) * self.force_scale / norm
         jac[6 * z, 4:6 * z:6] = -pocket * MICRON / norm
         jac[6 * z, 6 * z] = -self.land[0] * self.scale[6 * z] / norm
         return jac
@@ -169,6 +193,19 @@ class _Balance:
         hi = np.concatenate([np.tile([np.inf, 3.0, 3.0, 3.0, play, play], self.z),
                              [w[1] / self.scale[6 * self.z] + 1e-3], [np.inf] * 3])
         return lo, hi
+
+
+def spectral_derivative(n: int) -> np.ndarray:
+    """Matrix D with (D f)_j = df/dpsi at psi_j = 2 pi j / n for a periodic f sampled there,
+    exact for trigonometric polynomials of degree below n / 2 (Trefethen, Spectral Methods
+    in MATLAB, 2000, ch. 3: cot for even n, csc for odd n)."""
+    j = np.arange(n)
+    k = j[:, None] - j[None, :]
+    half = np.pi * k / n
+    with np.errstate(divide="ignore"):
+        entries = 0.5 * (-1.0) ** k / (np.tan(half) if n % 2 == 0 else np.sin(half))
+    entries[k == 0] = 0.0
+    return entries
 
 
 #: a pure radial load is reached from the steady state at an axial load of this fraction of
@@ -205,19 +242,23 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
         steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,
                               contact_law=contact_law, cage=cage)
     law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
-    make = lambda load: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, *load)  # noqa: E731
+    make = lambda load, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
+                                              *load, cage_offset=offset)
     largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
     y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps,
                                                  _load_text)
     if message is None and axial_force <= 0 < abs(radial_force):
         y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force), 0.25 * seed,
                                                      tol, left, _load_text)
-    converged = message is None
     if balance is None:  # no load step: the steady state itself
         balance = make((axial_force, 0.0))
+    if message is None:
+        y, worst, message, balance = _seat_cage(make, (axial_force, radial_force), y, cage, tol, worst)
+    converged = message is None
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start)
+                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start,
+                         cage_offset=tuple(balance.cage_offset))
 
 
 def _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm):
@@ -288,8 +329,8 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
     law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
     radius = bearing.pitch_radius  # tilts travel the path as the arc they move at the pitch circle
     scale = np.array([1.0, 1.0, 1.0, radius, radius])
-    make = lambda point: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land, axial, radial,  # noqa: E731
-                                  pose=point / scale)
+    make = lambda point, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
+                                               axial, radial, pose=point / scale, cage_offset=offset)
     begin = np.array([0.0, 0.0, steady.inner_race_shift, 0.0, 0.0])
     end = pose * scale
     span = float(np.linalg.norm(end - begin))
@@ -297,11 +338,56 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
                                               lambda point: _pose_text(point, radius))
     if balance is None:  # the steady state sits at the pose already
         balance = make(end)
+    if message is None:
+        y, worst, message, balance = _seat_cage(make, end, y, cage, tol, worst)
     if message is not None:
         return failed(message)
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, True, "converged", _time.perf_counter() - start, pose[3:].copy())
+                         d.copy(), worst, True, "converged", _time.perf_counter() - start, pose[3:].copy(),
+                         tuple(balance.cage_offset))
+
+
+#: the cage seat's fixed point stops when the cage moves less than this fraction of its land play
+#: (2 um of the reference cage's 0.2 mm: the kinematic slip then moves by < 0.005 pp)
+SEAT_TOLERANCE = 1e-2
+#: ... and gives up where a round moves it more than this fraction of the round before (the
+#: reference bearing at 2.8 kN + 0.85 kN contracts by 0.75, then ~0.25 a round)
+SEAT_CONTRACTION = 1.0
+
+
+def _seat_cage(make, point, y, cage, tol, worst, max_rounds=10):
+    """The balance at ``point`` with a land-guided cage on its land where the balls' pocket
+    forces push it (:meth:`CageModel.land_seat`; the balls orbiting about its centre), by
+    fixed-point iteration from the centred cage's balance ``y``: each round seats the cage
+    under the last pocket forces and continues the balance there in the cage's offset (a
+    jump of the whole land play at once is too far for Newton at high speed, where it
+    varies the balls' orbital speeds by ~1 %). Where the seat has no fixed point (the
+    pockets' net force turns with the cage's offset: a cage that whirls in its land, e.g. a
+    7205 at 12 000 rpm) or its balance is not found, the centred cage's balance is kept.
+    Returns (y, worst residual, None, the balance)."""
+    balance = make(point)
+    if cage is None or not cage.guided:
+        return y, worst, None, balance
+    centred = (y, worst, None, balance)
+    offset = np.zeros(3)
+    play = 0.5 * cage.guide_clearance
+    moved = np.inf
+    for _ in range(max_rounds):
+        pocket = balance.unpack(y / balance.scale)[0]
+        seat = cage.land_seat(-(pocket[:, None] * balance.e_p).sum(axis=0))
+        move = float(np.linalg.norm(seat - offset))
+        if move <= SEAT_TOLERANCE * play:
+            return y, worst, None, balance
+        if move > SEAT_CONTRACTION * moved:
+            return centred
+        moved = move
+        y, worst, message, last, _ = _continue(lambda e: make(point, e), y, offset, seat, 0.25 * play, tol, None,
+                                               lambda e: f"the cage {np.linalg.norm(e) * 1e6:.3g} um off centre")
+        if message is not None:
+            return centred
+        offset, balance = seat, last
+    return centred
 
 
 def _continue(make, y, start, end, largest, tol, steps_left, describe):

@@ -27,7 +27,8 @@ def mirrored(state: AzimuthStates) -> AzimuthStates:
     return replace(state, cage_speed=-state.cage_speed, orbit_radius=state.orbit_radius[j],
                    axial_position=state.axial_position[j], omega=state.omega[j] * np.array([-1.0, 1.0, -1.0]),
                    pocket_force=-state.pocket_force[j], displacement=state.displacement * MIRROR_POSE[:3],
-                   tilt=tuple(np.asarray(state.tilt) * MIRROR_POSE[3:]))
+                   tilt=tuple(np.asarray(state.tilt) * MIRROR_POSE[3:]),
+                   cage_offset=tuple(np.asarray(state.cage_offset) * MIRROR_POSE[:3]))
 
 
 #: kinematic cage slip of the axial load alone, %, above which the combined-load start's
