@@ -107,8 +107,10 @@ def _simulate(args) -> int:
     parts = ", ".join(f"{k.replace('_', ' ')} {v:.1f}" for k, v in loss.items() if k != "total" and abs(v) >= 0.05)
     print(f"  power loss (MODEL.md §11)           {loss['total']:8.1f} W ({parts or 'none'}); "
           f"drive {data['drive_power_W']:.1f} W")
-    print(f"  energy balance (drive - loss)       {d['energy_balance_percent']:8.2f} % of the drive "
-          f"(settled: integrator damping only)")
+    remainder = {True: "settled: the integrator's damping only",
+                 False: "not settled: it includes kinetic energy still changing",
+                 None: "too short to judge: it includes kinetic energy still changing"}[data["settled"]]
+    print(f"  energy balance (drive - loss)       {d['energy_balance_percent']:8.2f} % of the drive ({remainder})")
     print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
           f"{data['newton_iterations']} Newton iterations, {data['jacobian_updates']} Jacobian updates, "
           f"wall time {data['wall_time_s']:.1f} s")
