@@ -18,7 +18,6 @@ Example (importing the package registers ``mbs.CreateAngularContactBearing`` on 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -29,152 +28,15 @@ from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, Bearin
 from ..presets import REFERENCE_BEARING
 from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, move_body, node_rows, node_state,
                      race_adapter, ring_inertia)
-from ..results.records import inputs_record
 from ..solvers.quasidynamic import AzimuthStates
 from ..solvers.quasistatic import solve_load_distribution
 from ..solvers.raceway import choose_inner_control, jones_axis_start, raceway_control
 from ..solvers.start import steady_start
 from .connector import BearingConnector, CageModel
+from .handle import SENSOR_LABELS, SENSOR_OUTPUTS, BearingHandle  # noqa: F401 (re-exported)
 from .predictor import install_predictor
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
-
-
-#: Outputs :meth:`BearingHandle.AddSensors` can record.
-SENSOR_OUTPUTS = ("cageSpeed", "cageSlip", "kinematicCageSlip", "attitudeXZ", "attitudeYZ")
-#: what each output is and its unit (MODEL.md §7), for plot axes and legends
-SENSOR_LABELS = {"cageSpeed": ("cage speed", "rad/s"), "cageSlip": ("cage slip, the paper's P19", "%"),
-                 "kinematicCageSlip": ("kinematic cage slip", "%"), "attitudeXZ": ("ball attitude xz", "deg"),
-                 "attitudeYZ": ("ball attitude yz", "deg")}
-
-
-@dataclass
-class BearingHandle:
-    """Item indices, sensors and result accessors of a bearing added to an ``mbs``."""
-
-    bearing: Bearing
-    ballBodies: list
-    ballNodes: list
-    cageBody: int | None
-    cageNode: int | None
-    innerRaceBody: int | None
-    innerRaceNode: int | None
-    outerRaceBody: int | None
-    outerRaceNode: int | None
-    contactObject: int
-    stateSensor: int | None
-    connector: BearingConnector = field(repr=False)
-    nodeNumbers: list = field(repr=False, default_factory=list)
-    initialLoads: object = field(repr=False, default=None)
-    #: the :class:`~exudyn_bearing.solvers.steady.SteadyState` the run starts from, or None (pure-rolling start)
-    initialSteadyState: object = field(repr=False, default=None)
-    #: under combined load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` the run
-    #: starts from, or None
-    initialQuasiDynamicState: object = field(repr=False, default=None)
-
-    def Inputs(self, **settings) -> dict:
-        """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,
-        races, package version, and ``settings`` given here), for a result file
-        (:func:`exudyn_bearing.results.records.inputs_record`)."""
-        con = self.connector
-        return inputs_record(self.bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
-                             cage=con.cage, races=con.races, **settings)
-
-    def States(self, mbs):
-        """Recorded (t, q, q_t) of the bearing's nodes: absolute coordinates, shape
-        (steps, 6 * nodes) each, from the state sensor."""
-        if self.stateSensor is None:
-            raise ValueError("recordStates=False: this bearing records no states")
-        data = np.asarray(mbs.GetSensorStoredData(self.stateSensor))
-        if data.ndim != 2 or data.shape[0] == 0:
-            raise ValueError("no states recorded yet: run a simulation with sensors stored internally")
-        n = 6 * len(self.nodeNumbers)
-        return data[:, 0], data[:, 1:1 + n], data[:, 1 + n:1 + 2 * n]
-
-    def RecommendedStep(self) -> float:
-        """The time step this bearing needs at its start state, s: 1e-4 s, or less for small
-        balls at high contact stiffness (:func:`exudyn_bearing.model.steprule.recommended_step`).
-        ``run_solver`` uses the smallest over its bearings unless a step is given."""
-        from .steprule import NOMINAL_STEP, recommended_step
-
-        return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
-
-    def RecommendedAbsoluteTolerance(self) -> float:
-        """Newton's absolute tolerance for this bearing, N: 3e-5 of its largest contact load
-        at the start state, the resolution of the compiled traction rule (MODEL.md §10b;
-        :func:`exudyn_bearing.model.steprule.recommended_absolute_tolerance`). ``run_solver`` uses
-        the smallest over its bearings unless one is given; for ``exu.SolveDynamic`` set
-        ``timeIntegration.newton.absoluteTolerance`` to it."""
-        from .steprule import MIN_ABSOLUTE_TOLERANCE, recommended_absolute_tolerance
-
-        return MIN_ABSOLUTE_TOLERANCE if self.initialLoads is None else recommended_absolute_tolerance(self.initialLoads)
-
-    def AddSensors(self, mbs, outputs=SENSOR_OUTPUTS, storeInternal: bool = True, writeToFile: bool = False,
-                   fileNames: dict | None = None) -> dict:
-        """Exudyn sensors of the bearing's outputs (``SensorUserFunction``), for
-        ``mbs.PlotSensor``, live views and sensor files; nothing is evaluated unless a
-        scene asks for them. Outputs (MODEL.md §7): 'cageSpeed' (rad/s), 'cageSlip' (P19,
-        %), 'kinematicCageSlip' (%, mean over balls), 'attitudeXZ' and 'attitudeYZ' (ball
-        attitude angles, deg, mean over balls). All requested outputs share one evaluation
-        of the connector per written time. Returns {output: sensor number}; call before
-        ``mbs.Assemble()``. The write period is ``simulationSettings.solution.sensors.writePeriod``."""
-        from exudyn.utilities import SensorUserFunction
-
-        from ..results.outputs import compute_results
-
-        unknown = [o for o in outputs if o not in SENSOR_OUTPUTS]
-        if unknown or not outputs:
-            raise ValueError(f"outputs: choose from {SENSOR_OUTPUTS}, got {list(outputs)!r}")
-        nodes, ref, indices, cache = self.nodeNumbers, self.connector.reference, [], {}
-
-        def evaluate(mbs_, t, configuration):
-            key = (float(t), int(configuration))
-            if key not in cache:
-                if not indices:
-                    indices.extend(node_rows(mbs_, nodes))
-                q = np.asarray(mbs_.systemData.GetODE2Coordinates(configuration=configuration))[indices] + ref
-                q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=configuration))[indices]
-                res = compute_results(self, np.array([t]), q[None], q_t[None])
-                cache.clear()
-                cache[key] = {"cageSpeed": res.cage_speed[0], "cageSlip": res.cage_slip_percent[0],
-                              "kinematicCageSlip": res.kinematic_cage_slip_percent[0],
-                              "attitudeXZ": float(np.degrees(np.mean(res.attitude_xz[0]))),
-                              "attitudeYZ": float(np.degrees(np.mean(res.attitude_yz[0])))}
-            return cache[key]
-
-        sensors = {}
-        for name in outputs:
-            def user_function(mbs_, t, sensorNumbers, factors, configuration, name=name):
-                return [float(evaluate(mbs_, t, configuration)[name])]
-
-            kw = {"fileName": fileNames[name]} if fileNames and name in fileNames else {}
-            sensors[name] = mbs.AddSensor(SensorUserFunction(sensorUserFunction=user_function, storeInternal=storeInternal,
-                                                             writeToFile=writeToFile, name=f"bearing_{name}", **kw))
-        return sensors
-
-    def PlotSensors(self, mbs, sensors: dict, outputs=None, **kwargs):
-        """``mbs.PlotSensor`` of sensors from :meth:`AddSensors` (``outputs``: a subset of its
-        keys, default all) with what each is and its unit on the y axis and in the legend
-        (Exudyn labels a user-function sensor 'UserFunction'); ``kwargs`` go to
-        ``mbs.PlotSensor`` and win. Returns what it returns ([plt, fig, ax, line])."""
-        names = list(sensors) if outputs is None else list(outputs)
-        unknown = [n for n in names if n not in sensors]
-        if unknown or not names:
-            raise ValueError(f"outputs: choose from the sensors given, {list(sensors)!r}, got {names!r}")
-        units = {SENSOR_LABELS[n][1] for n in names}
-        y_label = (f"{SENSOR_LABELS[names[0]][0]}, {units.pop()}" if len(names) == 1 else
-                   ", ".join(sorted(units)) if len(units) == 1 else " / ".join(SENSOR_LABELS[n][1] for n in names))
-        options = dict(yLabel=y_label, labels=[f"{SENSOR_LABELS[n][0]} ({SENSOR_LABELS[n][1]})" for n in names],
-                       xLabel="time, s", components=0)
-        options.update(kwargs)
-        return mbs.PlotSensor(sensorNumbers=[sensors[n] for n in names], **options)
-
-    def Results(self, mbs, stride: int = 1):
-        """Bearing outputs per recorded step (:class:`exudyn_bearing.results.outputs.BearingResults`)."""
-        from ..results.outputs import compute_results
-
-        t, q, q_t = self.States(mbs)
-        return compute_results(self, t[::stride], q[::stride], q_t[::stride])
 
 
 def _check_frame(position, rotation):
