@@ -288,6 +288,24 @@ def hand_generalized(handle, q, q_t, law, drag, applied):
         force[b] += pockets[j]
         force[s] -= pockets[j]
         torque[s] += np.cross(c[j] - pos[s], -pockets[j])
+    if con.cage.guided:  # the guiding land: radial through both centres, pushes only
+        r = con.layout[con.cage.guidance]
+        n_axis = rot[r][:, 2]
+        d = pos[s] - pos[r]
+        d = d - (d @ n_axis) * n_axis
+        e = np.linalg.norm(d)
+        play = 0.5 * con.cage.guide_clearance
+        land = np.zeros(3)
+        if e > play:
+            n = d / e
+            u = min((e - play) / 10e-6, 1.0)  # the damping's cubic ramp over 10 um
+            c_g = con.guide[3]
+            e_dot = (vel[s] - vel[r]) @ n
+            land = -max(con.cage.guide_stiffness * (e - play) + c_g * u * u * (3 - 2 * u) * e_dot, 0.0) * n
+        parts["land"] = land
+        force[s] += land
+        force[r] -= land
+        torque[r] += np.cross(pos[s] - pos[r], -land)
     if drag is not None:
         dr = hand_drag(c, v, con.origin, con.axis, drag)
         parts["drag"] = dr
@@ -337,6 +355,7 @@ def test_generalized_forces_match_hand_assembly(config):
     assert n_pockets >= 4 and np.max(np.linalg.norm(parts["pockets"], axis=1)) > 10.0
     if config == "loaded":
         assert n_pockets < BRG.balls  # play: some pockets disengaged
+        assert np.linalg.norm(parts["land"]) > 1.0  # the start seats the cage on its land (MODEL.md §12a)
     assert np.all(np.linalg.norm(parts["drag"], axis=1) > 0.0)
 
     state = con.evaluate(0.0, q, q_t, details=True)
