@@ -174,22 +174,35 @@ def test_a_settled_preloaded_pair_holds_its_slip_and_its_mirror_symmetry():
 
 
 def test_settle_shaft_moves_the_shaft_to_the_quasi_static_solution_and_checks_it():
+    """SettleShaft puts a shaft (Exudyn's default Euler-parameter node, placed away from the
+    origin) where solve_shaft puts the same shaft at the origin, displaced and tilted; a
+    shaft whose axis is not z is refused."""
     from exudyn.utilities import InertiaCylinder
 
     from exudyn_bearing.races import node_state
     from exudyn_bearing.solvers.shaft import solve_shaft
 
-    pair = [ShaftBearing(REFERENCE_BEARING, (0.0, 0.0, -0.1), np.eye(3), (0.0, 0.0, -0.1 + 5e-6)),
-            ShaftBearing(REFERENCE_BEARING, (0.0, 0.0, 0.1), np.diag([1.0, -1.0, -1.0]), (0.0, 0.0, 0.1 - 5e-6))]
+    def pair(at):
+        return [ShaftBearing(REFERENCE_BEARING, tuple(at + [0.0, 0.0, -0.1]), np.eye(3), (0.0, 0.0, -0.1 + 5e-6)),
+                ShaftBearing(REFERENCE_BEARING, tuple(at + [0.0, 0.0, 0.1]), np.diag([1.0, -1.0, -1.0]),
+                             (0.0, 0.0, 0.1 - 5e-6))]
+
+    at = np.array([0.1, 0.2, 0.3])
     mbs = exu.SystemContainer().AddSystem()
-    body = mbs.CreateRigidBody(inertia=InertiaCylinder(density=7850.0, length=0.3, outerRadius=0.045, axis=2),
-                               referencePosition=[0.0, 0.0, 0.0], initialAngularVelocity=[0.0, 0.0, 188.5],
-                               returnDict=True)["bodyNumber"]  # Exudyn's default: Euler parameters
-    eq = SettleShaft(mbs, body, pair, force=(500.0, 0.0, 300.0), moment=(0.0, 20.0))
-    ref = solve_shaft(pair, force=(500.0, 0.0, 300.0), moment=(0.0, 20.0), rpm=188.5 * 30 / np.pi)
+    inertia = InertiaCylinder(density=7850.0, length=0.3, outerRadius=0.045, axis=2)
+    body = mbs.CreateRigidBody(inertia=inertia, referencePosition=at.tolist(), initialAngularVelocity=[0.0, 0.0, 188.5],
+                               returnDict=True)["bodyNumber"]
+    eq = SettleShaft(mbs, body, pair(at), force=(500.0, 0.0, 300.0), moment=(0.0, 20.0))
+    ref = solve_shaft(pair(np.zeros(3)), force=(500.0, 0.0, 300.0), moment=(0.0, 20.0), rpm=188.5 * 30 / np.pi)
+    assert np.linalg.norm(ref.displacement) > 1e-6 and abs(ref.tilt[1]) > 1e-6  # it moves and tilts
     pos, rot, _, _ = node_state(mbs, mbs.GetObject(body)["nodeNumber"])
-    assert np.allclose(pos, ref.displacement, atol=1e-12) and np.allclose(eq.tilt, ref.tilt)
+    assert np.allclose(pos - at, ref.displacement, atol=1e-12) and np.allclose(eq.tilt, ref.tilt)
     assert np.allclose(rot[:, 2], [ref.tilt[1], -ref.tilt[0], 1.0], atol=1e-9)  # axis ~ (theta_y, -theta_x, 1)
+    tilted = mbs.CreateRigidBody(inertia=inertia, referencePosition=[0.0, 0.0, 0.0],
+                                 referenceRotationMatrix=np.array([[1.0, 0, 0], [0, 0, -1.0], [0, 1.0, 0]]),
+                                 returnDict=True)["bodyNumber"]
+    with pytest.raises(ValueError, match="shaftBody: its axis"):
+        SettleShaft(mbs, tilted, pair(np.zeros(3)))
 
 
 def test_start_load_input_is_checked():

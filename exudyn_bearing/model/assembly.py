@@ -3,6 +3,7 @@ on its bearings before the bearings are added (MODEL.md §4, §12a)."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -54,11 +55,13 @@ def SettleShaft(mbs, shaftBody: int, bearings, force=(0.0, 0.0, 0.0), moment=(0.
     if kind not in NODE_KINEMATICS:
         raise ValueError(f"shaftBody: body {shaftBody} sits on a {kind} node; the shaft takes rigid-body nodes of type "
                          + ", ".join(NODE_KINEMATICS))
-    _, rot, _, w = node_state(mbs, node)
+    where, rot, _, w = node_state(mbs, node)
     if not np.allclose(rot[:, 2], (0.0, 0.0, 1.0), atol=1e-9):
         raise ValueError("shaftBody: its axis (third column of its rotation) must be the global z axis at the start")
     if rpm is None:
         rpm = abs(float(w[2])) * 30.0 / math.pi
+    # solve_shaft puts the shaft's reference point at the origin: the housing relative to it
+    bearings = [replace(b, position=tuple(np.asarray(b.position, dtype=float) - where)) for b in bearings]
     eq = solve_shaft(bearings, force, moment, rpm=rpm)
     move_body(mbs, node, eq.displacement, _rotation(*eq.tilt))
     return eq

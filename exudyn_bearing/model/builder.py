@@ -120,7 +120,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         under it (micrometres; its initial coordinates). Not applied. Without it, an
         ``OnBody`` bearing starts from the balance of its balls with the races where your
         bodies are (:func:`~exudyn_bearing.solvers.quasidynamic.pose_state`): place a shaft on
-        several bearings first with :func:`~exudyn_bearing.model.assembly.SettleShaft`.
+        several bearings first with :func:`~exudyn_bearing.model.assembly.SettleShaft` (a
+        ``startLoad`` on each would move the shaft once per bearing).
     position, rotationMatrix
         Bearing frame in global coordinates; its third column is the bearing axis.
     contactLaw : contact.ballrace.ContactLaw

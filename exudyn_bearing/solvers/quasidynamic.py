@@ -7,7 +7,12 @@ the cage is in torque balance (sum_j P_j r_cj = the land's friction torque) and 
 race in force balance with the applied load. Unknowns: per ball P_j, its angular velocity
 and its centre (r_cj, z_cj) in its azimuth plane, the cage speed and the inner race's
 displacement (6 Z + 4); each ball's equations depend on its own unknowns, the cage speed and
-the race only, so the Jacobian is differenced in 6 + 4 evaluations.
+the race only, so the Jacobian is differenced in 6 + 4 evaluations, plus the exact coupling
+of the balls' spins by the orbital transport I w_c dw/dpsi (each ball carries its spin from
+azimuth to azimuth; spectral derivative over the balls). A land-guided cage is then seated
+on its land where the pockets push it, the balls orbiting about its centre (fixed point,
+:func:`_seat_cage`). :func:`pose_state` holds the race at a given pose instead of balancing
+it (races on the user's bodies).
 
 Light radial loads on a skidding bearing have several balances; the one the dynamic model
 settles near is reached by continuation in the radial load from the axial steady state
