@@ -34,6 +34,7 @@ from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
 from ..renamed import accepts_old_names
 from .newton import damped_newton
+from .quasistatic import solve_load_distribution
 from .steady import contact_constants, steady_state
 
 __all__ = ["AzimuthStates", "combined_load_state", "pose_state", "seed_axial_load"]
@@ -305,8 +306,6 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
     :data:`POSE_STEPS` steps; a tilt enters each ball's inner groove to first order.
     ``converged`` False with a ``message`` where the balls carry nothing at the pose, or the
     continuation stalls or runs out of ``max_steps``."""
-    from .quasistatic import solve_load_distribution
-
     start = _time.perf_counter()
     pose = np.asarray(pose, dtype=float)
     if pose.shape == (3,):
