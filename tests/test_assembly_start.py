@@ -28,7 +28,7 @@ pitch_diameter = 0.0385
 inner_conformity = 0.52
 outer_conformity = 0.53
 contact_angle = 25.0
-"""
+"""  # tests/test_user_path.py adds its own oil and drag to it
 
 #: a plain Exudyn scene: the user's shaft (speed and tilt held) loaded by the user's force,
 #: the bearing's inner race on it, solved by SolveDynamic with the README's settings; prints JSON

@@ -9,16 +9,10 @@ import sys
 
 import pytest
 
-#: the user's file: 7205 geometry, a thinner oil and a 5 % oil-air drag
-USER_FILE = """\
-[bearing]
-balls = 13
-ball_diameter = 0.007938
-pitch_diameter = 0.0385
-inner_conformity = 0.52
-outer_conformity = 0.53
-contact_angle = 25.0
+from tests.test_assembly_start import BEARING_7205
 
+#: the user's file: 7205 geometry, a thinner oil and a 5 % oil-air drag
+USER_FILE = BEARING_7205 + """
 [lubricant]
 viscosity = 0.02
 reference_temperature = 40.0

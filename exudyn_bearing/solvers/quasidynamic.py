@@ -261,10 +261,15 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
     if message is None:
         y, worst, message, balance = _seat_cage(make, (axial_force, radial_force), y, cage, tol, worst)
     converged = message is None
+    return _states(balance, y, worst, converged, message or "converged", start)
+
+
+def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> AzimuthStates:
+    """The :class:`AzimuthStates` of the unscaled unknowns ``y`` of ``balance``."""
     pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, converged, message or "converged", _time.perf_counter() - start,
-                         cage_offset=tuple(balance.cage_offset))
+                         d.copy(), worst, converged, message, _time.perf_counter() - start, tilt,
+                         tuple(balance.cage_offset))
 
 
 def _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm):
@@ -346,10 +351,7 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
         y, worst, message, balance = _seat_cage(make, end, y, cage, tol, worst)
     if message is not None:
         return failed(message)
-    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
-    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, True, "converged", _time.perf_counter() - start, pose[3:].copy(),
-                         tuple(balance.cage_offset))
+    return _states(balance, y, worst, True, "converged", start, tuple(pose[3:]))
 
 
 #: the cage seat's fixed point stops when the cage moves less than this fraction of its land play
