@@ -7,16 +7,16 @@ its centre, (p - c) x F + M_z n. The race receives -F at p and -M_z n.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
-from .terms import contact_terms, term_record
+from .terms import contact_terms, surface_terms, term_record
 
-__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "TRACTION_MODELS", "CROOK_MODELS"]
+__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS", "CROOK_MODELS"]
 
 TRACTION_MODELS = ("crook-limited", "crook", "newtonian", "coulomb", "none")
 #: the models evaluated by :func:`contact.traction.crook_traction`
@@ -260,7 +260,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         # the per-contact terms (contact.terms): thermal film factor, rolling resistance
         terms = term_record(law, lubricant, params.ball_diameter)
         phi_t, push, couple = 1.0, 0.0, 0.0
-        if any(terms):
+        if terms.per_contact:
             r_y = geometry.curvature_radii(params.ball_diameter, params.pitch_diameter, kin.contact_angle,
                                            params.conformity, params.race)[1]
             rate = np.zeros(n_con) if kin.rolling_rate is None else kin.rolling_rate
@@ -296,3 +296,11 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     if law.rolling_resistance:
         moment = moment + rolling[:, None] * kin.transverse
     return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)
+
+
+def with_surface(kin: ContactKinematics, terms, race, ball, ball_radius) -> ContactKinematics:
+    """``kin`` with the race surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md
+    §13): approach δ + h and its rate + (dh/dθ) θ̇; ``race`` (0 inner, 1 outer) and ``ball``
+    index of each contact, ``ball_radius`` m."""
+    h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, ball_radius)
+    return replace(kin, penetration=kin.penetration + h, penetration_rate=kin.penetration_rate + slope * kin.orbit_rate)

@@ -71,6 +71,10 @@ class ContactKinematics:
     point_radius: np.ndarray  #: distance of the contact centre from the race axis, m
     #: relative rolling rotation (w_ball - w_race) . t2, rad/s (MODEL.md §11b)
     rolling_rate: np.ndarray = None
+    #: azimuth of the contact in the race's own frame, rad (MODEL.md §13)
+    azimuth: np.ndarray = None
+    #: the ball's orbital speed relative to the race, d(azimuth)/dt, rad/s
+    orbit_rate: np.ndarray = None
 
 
 def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, race_rotation,
@@ -117,7 +121,8 @@ def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, ra
     u_x = _dot(slip, t1)
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     return ContactKinematics(con.penetration, rate, n, t1, t2, p, con.contact_angle, u_x, _dot(slip, t2),
-                             _dot(w_r - w_b, n), entrainment, rho_c, rho_p, _dot(w_b - w_r, t2))
+                             _dot(w_r - w_b, n), entrainment, rho_c, rho_p, _dot(w_b - w_r, t2),
+                             np.arctan2(local[:, 1], local[:, 0]), orbit_rel)
 
 
 def rolling_cage_speed(ball_centre, spin_axis, inner_point, outer_point, inner_speed, outer_speed,

@@ -10,6 +10,8 @@ the stages below for every loaded contact — the compiled kernel
 (:func:`contact.ballrace.ball_race_forces`) through :func:`contact_terms` — so a term is
 computed once, by the same code, in both. The stages, in the order a contact is evaluated:
 
+0. :func:`surface_height` — the race surface's height toward the ball at the contact (defects,
+   waviness, ball-size variation, §13): added to the elastic approach before Hertz;
 1. :func:`film_factor` — a factor on the isothermal central film h (the thermal film, §11e);
 2. :func:`contact_loads` — forces and couples added on the ball (the rolling resistance,
    §11b): a force along the rolling direction t1 at the contact point and a couple about
@@ -31,9 +33,11 @@ from .kernel_cache import drop_stale
 drop_stale(__file__, Path(__file__).parent.glob("*.py"))
 
 from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
+from .surface import NO_SURFACE, SurfaceRecord, race_height  # noqa: E402
 from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
 
-__all__ = ["TermRecord", "ContactState", "term_record", "film_factor", "contact_loads", "contact_terms"]
+__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "film_factor", "contact_loads",
+           "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]
 
 #: floor of the thermal film factor φ_T (MODEL.md §11e)
 THERMAL_FLOOR = 0.05
@@ -44,6 +48,12 @@ class TermRecord(NamedTuple):
 
     heating: float  #: c_ηT / K_c of the thermal film factor (MODEL.md §11e), m/W
     rolling_width: float  #: truncation width 𝓛 of the rolling resistance (MODEL.md §11b, the ball diameter), m
+    surface: SurfaceRecord = NO_SURFACE  #: defects, waviness, ball sizes (MODEL.md §13); empty arrays: off
+
+    @property
+    def per_contact(self) -> bool:
+        """Whether a stage-1 or stage-2 term is on (the surface is stage 0)."""
+        return self.heating > 0.0 or self.rolling_width > 0.0
 
 
 class ContactState(NamedTuple):
@@ -64,13 +74,37 @@ class ContactState(NamedTuple):
     viscosity: float  #: η0, Pa s
 
 
-def term_record(law, lubricant, ball_diameter) -> TermRecord:
+def term_record(law, lubricant, ball_diameter, surface: SurfaceRecord = NO_SURFACE) -> TermRecord:
     """The :class:`TermRecord` of a :class:`contact.ballrace.ContactLaw` with ``lubricant``
-    and a ball of ``ball_diameter`` (m): the terms the law switches on (Crook laws only)."""
+    and a ball of ``ball_diameter`` (m): the terms the law switches on (Crook laws only), and
+    the bearing's ``surface`` (:func:`contact.surface.surface_record`)."""
     crook = law.crook
     heating = float(lubricant.temperature_viscosity / lubricant.thermal_conductivity)
     return TermRecord(heating if (crook and law.thermal_film) else 0.0,
-                      float(ball_diameter) if (crook and law.rolling_resistance) else 0.0)
+                      float(ball_diameter) if (crook and law.rolling_resistance) else 0.0, surface)
+
+
+def plain_terms(terms: TermRecord) -> tuple:
+    """``terms`` as nested plain tuples (numba types those in its C fast path); the kernel
+    rebuilds it with :func:`terms_from_plain`."""
+    return (terms.heating, terms.rolling_width, tuple(terms.surface))
+
+
+@njit(cache=True, error_model="numpy")
+def terms_from_plain(plain):
+    """The :class:`TermRecord` of :func:`plain_terms`' tuple (inside a kernel)."""
+    return TermRecord(plain[0], plain[1], SurfaceRecord(*plain[2]))
+
+
+@njit(cache=True, error_model="numpy")
+def surface_height(terms, race, theta, contact_angle, point_radius, ball, ball_radius):
+    """Stage 0: (h, dh/dθ) of the race surface at the contact of ``ball`` with ``race`` (0 inner,
+    1 outer) at race-frame azimuth ``theta`` (rad), by :func:`contact.surface.race_height`;
+    (0, 0) for perfect surfaces (one comparison)."""
+    s = terms.surface
+    if s.waviness.shape[0] + s.defects.shape[0] + s.ball_excess.shape[0] == 0:
+        return 0.0, 0.0
+    return race_height(s, race, theta, contact_angle, point_radius, ball, ball_radius)
 
 
 @njit(cache=True, error_model="numpy")
@@ -105,6 +139,13 @@ def _contact_terms(terms, state, out):
         phi = film_factor(terms, cs)
         out[0, i] = phi
         out[1, i], out[2, i] = contact_loads(terms, cs, phi)
+
+
+def surface_terms(terms: TermRecord, race, theta, contact_angle, point_radius, ball, ball_radius) -> np.ndarray:
+    """Stage 0 for n contacts (the numpy path; arrays (n,)): rows (h m, dh/dθ m/rad), (2, n)."""
+    from .surface import race_heights
+
+    return race_heights(terms.surface, race, theta, contact_angle, point_radius, ball, ball_radius)
 
 
 def contact_terms(terms: TermRecord, **state) -> np.ndarray:

@@ -36,6 +36,16 @@ Example::
     traction = "crook-limited"       # or "crook" (the paper's law), "newtonian", "coulomb", "none"
     rolling_resistance = false
     thermal_film = false
+    [[defect]]                       # optional, any number (MODEL.md §13): a spall or notch
+    race = "outer"                   # or "inner" (turns with the inner race)
+    angle_deg = 0.0                  # centre, in the race's own frame
+    length = 0.18e-3                 # along the rolling direction, m
+    depth = 0.28e-3                  # m
+    width = 1e-3                     # across the raceway, m; absent: the whole raceway
+    [waviness]                       # optional: [order, amplitude_m, phase_deg] per line
+    outer = [[17, 0.2e-6, 0.0]]
+    inner = []
+    ball_diameter_variation = []     # m per ball (> 0 oversize)
 
 A function that takes a ``bearing`` takes a bearing file too — the :class:`BearingFile`
 or its path — and then every part the file gives (lubricant, drag, cage, contact law)
@@ -57,6 +67,7 @@ from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing, Material
 from .cage import CageModel
+from contact.surface import Defect, SurfaceModel, Waviness
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
 __all__ = ["BearingFile", "FileOr", "file_inputs", "load_bearing", "loads_bearing", "dumps_bearing",
@@ -72,6 +83,7 @@ class BearingFile:
     drag: BallDrag = REFERENCE_DRAG
     cage: CageModel = CageModel()
     contact_law: ContactLaw = ContactLaw()
+    surface: SurfaceModel = SurfaceModel()
 
 
 @dataclass(frozen=True)
@@ -88,7 +100,7 @@ class FileOr:
 
 #: the BearingFile field of each input name (the builder's and the functions')
 _FILE_FIELDS = {"lubricant": "lubricant", "ball_drag": "drag", "ballDrag": "drag", "cage": "cage",
-                "contact_law": "contact_law", "contactLaw": "contact_law"}
+                "contact_law": "contact_law", "contactLaw": "contact_law", "surface": "surface"}
 
 
 def file_inputs(bearing, **inputs):
@@ -119,8 +131,10 @@ FILE_LUBRICANT = FileOr(REFERENCE_LUBRICANT, "REFERENCE_LUBRICANT")
 FILE_DRAG = FileOr(REFERENCE_DRAG, "REFERENCE_DRAG")
 FILE_CAGE = FileOr(CageModel(), "CageModel()")
 FILE_LAW = FileOr(ContactLaw(), "ContactLaw()")
+FILE_SURFACE = FileOr(SurfaceModel(), "SurfaceModel(): perfect surfaces")
 
-_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law"}
+_SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law",
+             "defect", "waviness"}
 #: [cage] keys whose values are words, not numbers
 _CAGE_WORDS = {"kind", "guidance"}
 #: [contact_law] keys whose values are words, and those that are true or false
@@ -217,7 +231,55 @@ def loads_bearing(text: str) -> BearingFile:
             law = ContactLaw(**table)
         except ValueError as err:
             raise ValueError(f"[contact_law] {err}") from None
-    return BearingFile(bearing, lubricant, drag, cage, law)
+    return BearingFile(bearing, lubricant, drag, cage, law, _surface(data))
+
+
+def _surface(data: dict) -> SurfaceModel:
+    """The [[defect]] tables and the [waviness] section (MODEL.md §13)."""
+    defects = data.get("defect", [])
+    if not isinstance(defects, list):
+        raise ValueError("defect: write each defect as a [[defect]] table")
+    allowed = {f.name for f in fields(Defect)}
+    records = []
+    for i, table in enumerate(defects):
+        if not isinstance(table, dict):
+            raise ValueError("defect: write each defect as a [[defect]] table")
+        table = _table({"defect": table}, "defect", allowed, {"race"})
+        missing = {"race", "angle_deg", "length", "depth"} - set(table)
+        if missing:
+            raise ValueError(f"[[defect]] number {i + 1} needs {', '.join(sorted(missing))}")
+        try:
+            records.append(Defect(**table))
+        except ValueError as err:
+            raise ValueError(f"[[defect]] number {i + 1}: {err}") from None
+    waviness = Waviness()
+    if "waviness" in data:
+        table = data["waviness"]
+        if not isinstance(table, dict):
+            raise ValueError("[waviness] must be a table")
+        unknown = set(table) - {f.name for f in fields(Waviness)}
+        if unknown:
+            raise ValueError(f"unknown key(s) in [waviness]: {', '.join(sorted(unknown))} "
+                             "(allowed: ball_diameter_variation, inner, outer)")
+        for key, value in table.items():
+            if not isinstance(value, list):
+                raise ValueError(f"waviness.{key} must be a list, got {value!r}")
+            if key != "ball_diameter_variation" and not all(isinstance(row, list) for row in value):
+                raise ValueError(f"waviness.{key}: each entry is [order, amplitude_m, phase_deg], got {value!r}")
+        waviness = Waviness(**{k: tuple(tuple(r) if isinstance(r, list) else r for r in v) for k, v in table.items()})
+    return SurfaceModel(tuple(records), waviness)
+
+
+def _surface_text(surface: SurfaceModel) -> str:
+    text = ""
+    for d in surface.defects:
+        text += "\n" + _section("[defect]", d) + "\n"
+    w = surface.waviness
+    if w != Waviness():
+        rows = {k: "[" + ", ".join(f"[{o}, {a!r}, {p!r}]" for o, a, p in getattr(w, k)) + "]" for k in ("inner", "outer")}
+        text += (f"\n[waviness]\ninner = {rows['inner']}\nouter = {rows['outer']}\n"
+                 f"ball_diameter_variation = [{', '.join(repr(v) for v in w.ball_diameter_variation)}]\n")
+    return text
 
 
 def load_bearing(path) -> BearingFile:
@@ -277,7 +339,7 @@ def dumps_bearing(setup: BearingFile | Bearing) -> str:
         text += "\n" + _section("cage", setup.cage) + "\n"
     if setup.contact_law != ContactLaw():
         text += "\n" + _section("contact_law", setup.contact_law) + "\n"
-    return text
+    return text + _surface_text(setup.surface)
 
 
 def save_bearing(setup: BearingFile | Bearing, path) -> None:

@@ -19,6 +19,7 @@ pytest.importorskip("numba")
 from contact import kernels as compiled  # noqa: E402
 from contact.kernels import float32  # noqa: E402
 from contact.ballrace import ContactLaw  # noqa: E402
+from contact.surface import Defect, SurfaceModel, Waviness  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
@@ -138,6 +139,11 @@ SCENES = {
         axialForce=2200.0, radialForce=2000.0, law=ContactLaw(rolling_resistance=True, thermal_film=True)),
     "no spin moment, Fixed inner translation": dict(innerRace=races.Driven(1800, translation="fixed"),
                                                     law=ContactLaw(spin_moment=False)),
+    # MODEL.md §13: defects on both races (one under ball 0), waviness, an oversize ball
+    "race surfaces, combined load": dict(axialForce=2200.0, radialForce=2000.0, surface=SurfaceModel(
+        (Defect("outer", 0.0, 1.0e-3, 5e-6), Defect("inner", 90.0, 2e-3, 20e-6, edge=0.2e-3)),
+        Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
+                 ball_diameter_variation=(1e-6,) + (0.0,) * 15))),
     # driven-speed torque (feed-forward of the ramp + feedback) and an inner-land cage
     "speed ramp, inner-guided cage, turning outer race": dict(
         innerRace=races.Driven(lambda t: 900.0 + 30000.0 * t), outerRace=races.Fixed(lambda t: -100.0 * t),
@@ -215,7 +221,8 @@ def test_spin_moment_term_matches_numpy_path():
 
 
 @pytest.mark.parametrize("name", ["axial, rigid cage, drag", "spring chain, no drag", "pocket play, free outer race",
-                                  "speed ramp, inner-guided cage, turning outer race", "pocket friction"])
+                                  "speed ramp, inner-guided cage, turning outer race", "pocket friction",
+                                  "race surfaces, combined load"])
 def test_connector_jacobian_compiled_matches_numpy(name):
     """The compiled Jacobian (compiled states, kernels and assembly) equals the numpy one up
     to finite-difference noise of the float32 rays: ball blocks, coupled balls (spring

@@ -15,7 +15,8 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from ..terms import ContactState, contact_loads, film_factor
+from ..surface import SurfaceRecord
+from ..terms import ContactState, TermRecord, contact_loads, film_factor, surface_height
 from .crook import crook_one
 
 __all__ = ["race_contacts", "race_contacts_parallel", "rotation_matrices"]
@@ -87,6 +88,11 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     nlx, nly, nlz = dx / dist, dy / dist, dz / dist
     angle = math.atan2(sgn * nlz, sgn * (nlx * ex + nly * ey))
     pen = dist - tube
+    rho_p = math.hypot(lx + ball_radius * nlx, ly + ball_radius * nly)
+    # stage 0 (contact.terms): the race surface's height at the contact, in the race's own frame
+    height, height_slope = surface_height(terms, k, math.atan2(ly, lx), angle, rho_p, j, ball_radius)
+    if height != 0.0 or height_slope != 0.0:  # (a separate branch: a perfect surface stays bit for bit)
+        pen += height
     penetration[ib, k, j] = pen
     nx = R[0, 0] * nlx + R[0, 1] * nly + R[0, 2] * nlz
     ny = R[1, 0] * nlx + R[1, 1] * nly + R[1, 2] * nlz
@@ -120,8 +126,9 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     ory = v[ib, j, 1] - (vo[1] + wr[2] * rx_ - wr[0] * rz_)
     orz = v[ib, j, 2] - (vo[2] + wr[0] * ry_ - wr[1] * rx_)
     orbit_rel = (orx * t1x + ory * t1y + orz * t1z) / rho_c
-    rho_p = math.hypot(lx + ball_radius * nlx, ly + ball_radius * nly)
     entrainment = -0.5 * u_x - orbit_rel * rho_p
+    if height_slope != 0.0:  # the surface under the moving contact rises or falls
+        rate += height_slope * orbit_rel
     # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
     r_x = diam * (pitch_diameter + sgn * diam * math.cos(angle)) / (2.0 * pitch_diameter)
     r_y = f_conf * diam / (2.0 * f_conf - 1.0)
@@ -194,7 +201,7 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
     tables : CrookTables
         :func:`contact.kernels.crook.crook_tables`.
     terms : contact.terms.TermRecord
-        The per-contact terms (thermal film, rolling resistance).
+        The per-contact terms (surface, thermal film, rolling resistance).
     out : ContactOutputs
         Written: force on each ball at its contact with race k (N), moment about the ball
         centre (N m), elastic approach δ (m) and normal load Q (N).
@@ -209,5 +216,10 @@ def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, tod
     contact indices ``todo`` only (state idx // 2Z, race idx // Z % 2, ball idx % Z; int64):
     the rest of the outputs is left as it is (a Jacobian's race columns change one race's
     contacts only)."""
+    # numba's parallel loop passes records of arrays field by field, not nested ones: the terms'
+    # surface record travels as its arrays and is rebuilt per contact (no copy)
+    heating, width = terms.heating, terms.rolling_width
+    waves, defects, excess, nominal = terms.surface
     for n in prange(todo.shape[0]):
-        _race_contact(todo[n], balls, frames, geometry, law, tables, terms, out)
+        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal))
+        _race_contact(todo[n], balls, frames, geometry, law, tables, one, out)

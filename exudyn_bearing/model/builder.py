@@ -23,8 +23,9 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
+from contact.surface import SurfaceModel, surface_record
 from ..bearing import BallDrag, Bearing
-from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
+from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE, BearingFile, file_inputs
 from ..presets import REFERENCE_BEARING
 from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, move_body, node_rows, node_state,
                      race_adapter, ring_inertia)
@@ -90,7 +91,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                                 axialForce: float = 0.0, radialForce: float = 0.0, startLoad=None,
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
                                 contactLaw: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE,
-                                ballDrag: BallDrag | None = FILE_DRAG, innerRaceDisplacement=None,
+                                ballDrag: BallDrag | None = FILE_DRAG, surface: SurfaceModel = FILE_SURFACE,
+                                innerRaceDisplacement=None,
                                 initialControl: str = "auto", initialState: str = "auto",
                                 recordStates: bool = True, show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
@@ -133,6 +135,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     ballDrag : BallDrag or None
         Sphere drag on the balls' orbital motion (MODEL.md §8; default: the bearing file's,
         else fully flooded); None: off.
+    surface : contact.surface.SurfaceModel
+        Race defects, waviness and ball-diameter variation (MODEL.md §13; default: the
+        bearing file's ``[[defect]]`` and ``[waviness]``, else perfect surfaces, which cost
+        nothing). The start state is the perfect bearing's.
     innerRaceDisplacement : (dx, dy, dz), optional
         Start a created (``Driven``/``Free``) inner race displaced by this much from the
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
@@ -174,13 +180,16 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     import exudyn.graphics as graphics
     from exudyn.utilities import InertiaSphere, ObjectGenericODE2, RigidBodyInertia, SensorUserFunction
 
-    bearing, (lubricant, contactLaw, cage, ballDrag) = file_inputs(bearing, lubricant=lubricant, contactLaw=contactLaw,
-                                                                   cage=cage, ballDrag=ballDrag)
+    bearing, (lubricant, contactLaw, cage, ballDrag, surface) = file_inputs(
+        bearing, lubricant=lubricant, contactLaw=contactLaw, cage=cage, ballDrag=ballDrag, surface=surface)
 
     if not isinstance(bearing, Bearing):
         raise ValueError(f"bearing must be a Bearing, got {type(bearing).__name__}")
     if not isinstance(lubricant, Lubricant):
         raise ValueError(f"lubricant must be a Lubricant, got {type(lubricant).__name__}")
+    if surface is not None and not isinstance(surface, SurfaceModel):
+        raise ValueError(f"surface must be a contact.surface.SurfaceModel, got {type(surface).__name__}")
+    surface_record(surface, bearing)  # its checks against this bearing's geometry, before mbs is touched
     inner = innerRace if innerRace is not None else Driven(1800.0)
     outer = outerRace if outerRace is not None else Fixed()
     for name, race in (("innerRace", inner), ("outerRace", outer)):
@@ -352,7 +361,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         nodes.append(node)
     connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
                                  layout, origin, frame, race_frames,
-                                 lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven)
+                                 lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven,
+                                 surface=surface)
     connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
                                           for n in nodes])
     ref = connector.reference

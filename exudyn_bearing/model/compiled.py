@@ -19,7 +19,7 @@ from numba import njit
 
 from contact import kernels
 from contact.kernel_cache import drop_stale
-from contact.terms import TermRecord, term_record
+from contact.terms import TermRecord, plain_terms, terms_from_plain
 
 # the one-state kernel below calls the contact/ kernels: recompile it when they changed
 drop_stale(__file__, [__file__, *kernels.SOURCES])
@@ -199,7 +199,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     balls, slots, cage_slot, held = mount.balls, mount.slots, mount.cage_slot, mount.held
     geometry, law, tables, terms, cage, pocket, guide = physics
     geometry, law, tables = kernels.RaceGeometry(*geometry), kernels.LawRecord(*law), kernels.CrookTables(*tables)
-    terms, cage = TermRecord(*terms), kernels.CageRecord(*cage)
+    terms, cage = terms_from_plain(terms), kernels.CageRecord(*cage)
     pocket_mu, pocket_slip = pocket
     guide_race, guide_play, guide_stiffness, guide_damping, guide_friction = guide
     fixed_omega, applied, driven = inputs
@@ -333,7 +333,7 @@ class CompiledForces:
         if con.guide is not None:
             guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
         self.physics = Physics(geometry, kernels.law_record(law, lub), kernels.crook_tables(law.quadrature_order),
-                               term_record(law, lub, b.ball_diameter), cage, pocket, guide)
+                               con.terms, cage, pocket, guide)
         held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
             held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
@@ -343,7 +343,8 @@ class CompiledForces:
                            held)
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._mount_tuple = tuple(self.mount)
-        self._physics_tuple = tuple(tuple(x) if isinstance(x, tuple) else x for x in self.physics)
+        self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
+                                    else x for x in self.physics)
         self._work = {}
         self._patterns = {}
         # ((t, force function), race speeds, applied force, driven rows) of the last call

@@ -12,9 +12,11 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces
+from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces, with_surface
 from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
+from contact.surface import SurfaceModel, surface_record
+from contact.terms import term_record
 from ..bearing import BallDrag, Bearing
 from ..cage import CageModel
 from ..jacobian import block_jacobian
@@ -95,8 +97,11 @@ class BearingConnector:
 
     def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
                  drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
-                 race_frames: dict, applied_force, held: dict, driven: dict | None = None):
+                 race_frames: dict, applied_force, held: dict, driven: dict | None = None,
+                 surface: SurfaceModel | None = None):
         self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
+        self.surface = surface if surface is not None and surface.active else None
+        self.terms = term_record(law, lubricant, bearing.ball_diameter, surface_record(self.surface, bearing))
         self.races, self.layout = races, layout
         self.origin = np.asarray(frame_origin, dtype=float)
         self.rotation = np.asarray(frame_rotation, dtype=float)
@@ -413,6 +418,9 @@ class BearingConnector:
         grooves, signs, params = self._contact_params(bsz)
         kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
+        if self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
+            kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
+                                   self.bearing.ball_radius)
         frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)

@@ -51,8 +51,9 @@ class BearingHandle:
         races, package version, and ``settings`` given here), for a result file
         (:func:`exudyn_bearing.results.records.inputs_record`)."""
         con = self.connector
+        surface = {} if con.surface is None else {"surface": con.surface}  # (a perfect bearing's record as before)
         return inputs_record(self.bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
-                             cage=con.cage, races=con.races, **settings)
+                             cage=con.cage, races=con.races, **surface, **settings)
 
     def States(self, mbs):
         """Recorded (t, q, q_t) of the bearing's nodes: absolute coordinates, shape

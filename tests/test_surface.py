@@ -1,0 +1,190 @@
+"""Race surfaces (MODEL.md §13): input checks, the bearing file's [[defect]] and [waviness],
+the height law against closed forms, and both force paths with surfaces."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from contact.surface import Defect, SurfaceModel, Waviness, race_heights, surface_record
+from exudyn_bearing import REFERENCE_BEARING
+from exudyn_bearing.bearingfile import BearingFile, dumps_bearing, loads_bearing
+
+B = REFERENCE_BEARING
+R = B.ball_radius
+
+
+@pytest.mark.parametrize("make, key", [
+    (lambda: Defect("outer", 0.0, -1e-3, 1e-5), "defect.length"),
+    (lambda: Defect("outer", 0.0, 1e-3, 0.0), "defect.depth"),
+    (lambda: Defect("outer", 0.0, 1e-3, 1e-5, width=-1e-3), "defect.width"),
+    (lambda: Defect("outer", math.nan, 1e-3, 1e-5), "defect.angle_deg"),
+    (lambda: Defect("cage", 0.0, 1e-3, 1e-5), "defect.race"),
+    (lambda: Defect("ball", 0.0, 1e-3, 1e-5), "defect.race"),
+    (lambda: Defect("outer", 0.0, 1e-3, 1e-5, edge=0.6e-3), "defect.edge"),
+    (lambda: Waviness(outer=((1, 1e-6, 0.0),)), "waviness.outer"),
+    (lambda: Waviness(inner=((5, 0.0, 0.0),)), "waviness.inner: amplitude"),
+    (lambda: Waviness(inner=((5, -1e-6, 0.0),)), "waviness.inner: amplitude"),
+    (lambda: Waviness(outer=((5.5, 1e-6, 0.0),)), "waviness.outer"),
+    (lambda: Waviness(outer=((5, 1e-6),)), "waviness.outer"),
+])
+def test_bad_surfaces_name_their_key(make, key):
+    with pytest.raises(ValueError, match=key.replace(".", r"\.")):
+        make()
+
+
+def test_surfaces_are_checked_against_the_bearing():
+    outer_circumference = math.pi * (B.pitch_diameter + B.ball_diameter * math.cos(B.contact_angle))
+    with pytest.raises(ValueError, match="defect.length.*circumference"):
+        surface_record(SurfaceModel((Defect("outer", 0.0, 1.01 * outer_circumference, 1e-5),)), B)
+    with pytest.raises(ValueError, match="defect.width.*wider than the inner groove"):
+        surface_record(SurfaceModel((Defect("inner", 0.0, 1e-3, 1e-5, width=4 * B.ball_diameter),)), B)
+    with pytest.raises(ValueError, match="ball_diameter_variation: one value per ball"):
+        surface_record(SurfaceModel(waviness=Waviness(ball_diameter_variation=(1e-6, 0.0))), B)
+
+
+def test_the_builder_refuses_a_surface_that_does_not_fit_before_touching_mbs():
+    exu = pytest.importorskip("exudyn")
+    from exudyn_bearing.model.builder import CreateAngularContactBearing
+
+    mbs = exu.SystemContainer().AddSystem()
+    with pytest.raises(ValueError, match="defect.length"):
+        CreateAngularContactBearing(mbs, surface=SurfaceModel((Defect("inner", 0.0, 1.0, 1e-5),)), show=False)
+    assert mbs.systemData.NumberOfNodes() == 0
+
+
+SURFACE = SurfaceModel((Defect("outer", 10.0, 0.5e-3, 0.28e-3, width=2e-3, offset=1e-4),
+                        Defect("inner", -45.0, 2e-3, 20e-6, edge=0.3e-3)),
+                       Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
+                                ball_diameter_variation=(2e-6,) + (0.0,) * (B.balls - 1)))
+
+
+def test_bearing_file_round_trips_its_surfaces():
+    text = dumps_bearing(BearingFile(B, surface=SURFACE))
+    assert "[[defect]]" in text and "[waviness]" in text
+    assert loads_bearing(text).surface == SURFACE
+    assert loads_bearing(dumps_bearing(BearingFile(B))).surface == SurfaceModel()
+
+
+@pytest.mark.parametrize("text, message", [
+    ('[[defect]]\nrace = "outer"\nlength = 1e-3\ndepth = 1e-5\n', r"\[\[defect\]\] number 1 needs angle_deg"),
+    ('[[defect]]\nrace = "outer"\nangle_deg = 0\nlength = 1e-3\ndepth = 1e-5\nsize = 3\n', "unknown key.*size"),
+    ('[[defect]]\nrace = "outer"\nangle_deg = 0\nlength = 1e-3\ndepth = -1e-5\n', "defect.depth"),
+    ("[waviness]\nouter = [[1, 1e-6, 0.0]]\n", "waviness.outer.*order must be an integer >= 2"),
+    ("[waviness]\nouter = [17, 1e-6, 0.0]\n", "waviness.outer"),
+    ("[waviness]\nroundness = []\n", "unknown key.*roundness"),
+])
+def test_bearing_file_surface_errors_name_the_key(text, message):
+    base = dumps_bearing(B)
+    with pytest.raises(ValueError, match=message):
+        loads_bearing(base + "\n" + text)
+
+
+def _heights(surface, race, theta, angle=None, radius=None, ball=0):
+    record = surface_record(surface, B)
+    theta = np.atleast_1d(np.asarray(theta, dtype=float))
+    angle = B.contact_angle if angle is None else angle
+    radius = 0.5 * B.pitch_diameter if radius is None else radius
+    return race_heights(record, race, theta, angle, radius, ball, R)
+
+
+def test_waviness_height_is_the_fourier_sum():
+    theta = np.linspace(-math.pi, math.pi, 41)
+    h, slope = _heights(SurfaceModel(waviness=Waviness(outer=((17, 0.3e-6, 20.0), (4, 1e-6, -60.0)))), 1, theta)
+    want = 0.3e-6 * np.cos(17 * theta + math.radians(20.0)) + 1e-6 * np.cos(4 * theta - math.radians(60.0))
+    np.testing.assert_allclose(h, want, rtol=0, atol=1e-18)
+    want_slope = -(17 * 0.3e-6 * np.sin(17 * theta + math.radians(20.0)) + 4e-6 * np.sin(4 * theta - math.radians(60.0)))
+    np.testing.assert_allclose(slope, want_slope, rtol=0, atol=1e-17)
+    inner, _ = _heights(SurfaceModel(waviness=Waviness(outer=((17, 0.3e-6, 20.0),))), 0, theta)
+    assert np.all(inner == 0.0)  # another race's waviness
+
+
+def test_short_notch_the_ball_cannot_reach_the_bottom_follows_the_circle_over_its_edges():
+    """A 0.18-mm notch, 0.28 mm deep (the CWRU outer-race fault): the ball centre drops at most
+    r - sqrt(r² - (L/2)²) in the middle (eq. 13.2), never the depth; its path is the circle
+    over the nearer edge; nothing outside the notch."""
+    length, rho = 0.18e-3, 0.5 * B.pitch_diameter
+    notch = SurfaceModel((Defect("outer", 0.0, length, 0.28e-3),))
+    x = np.linspace(-0.2e-3, 0.2e-3, 801)  # arc position from the notch centre
+    h, slope = _heights(notch, 1, x / rho, radius=rho)
+    u = np.clip(0.5 * length - np.abs(x), 0.0, None)  # distance to the nearer edge
+    want = np.where(np.abs(x) < 0.5 * length, -(R - np.sqrt(R * R - u * u)), 0.0)
+    np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
+    assert -h.min() == pytest.approx(R - math.sqrt(R * R - (0.5 * length) ** 2), rel=1e-9)
+    assert Defect("outer", 0.0, length, 0.28e-3).reach(R) == pytest.approx(-h.min(), rel=1e-9)
+    smooth = (np.abs(x) < 0.5 * length - 2e-6) & (np.abs(x) > 2e-6)  # off the edges and the kink at the centre
+    numeric = np.gradient(h, x / rho)
+    np.testing.assert_allclose(slope[smooth], numeric[smooth], rtol=2e-2, atol=0)
+
+
+def test_long_spall_reaches_its_depth_and_its_edge_ramps():
+    length, depth, edge, rho = 4e-3, 10e-6, 0.5e-3, 0.5 * B.pitch_diameter
+    x = np.linspace(-2.5e-3, 2.5e-3, 1001)
+    h, _ = _heights(SurfaceModel((Defect("inner", 30.0, length, depth, edge=edge),)), 0,
+                    math.radians(30.0) + x / rho, radius=rho)
+    u = np.clip(0.5 * length - np.abs(x), 0.0, None)
+    circle = R - np.sqrt(R * R - np.minimum(u, R) ** 2)
+    want = np.where(np.abs(x) < 0.5 * length, -np.minimum.reduce([np.full_like(x, depth), depth * u / edge, circle]), 0)
+    np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
+    assert h.min() == -depth
+
+
+def test_defect_across_the_raceway_and_turning_with_its_race():
+    """A defect 2 mm wide whose centre line is 1.5 mm off the contact path: a contact at the
+    nominal angle misses it, one moved by 1.5 mm of groove arc meets it."""
+    notch = SurfaceModel((Defect("outer", 0.0, 1e-3, 5e-6, width=2e-3, offset=1.5e-3),))
+    arc = B.outer_conformity * B.ball_diameter
+    assert _heights(notch, 1, 0.0)[0][0] == 0.0
+    assert _heights(notch, 1, 0.0, angle=B.contact_angle + 1.5e-3 / arc)[0][0] < 0.0
+    assert _heights(notch, 0, 0.0)[0][0] == 0.0  # the inner race has no defect
+
+
+def test_oversize_ball_adds_its_radius_excess_to_both_its_contacts():
+    surf = SurfaceModel(waviness=Waviness(ball_diameter_variation=(0.0, 3e-6) + (0.0,) * (B.balls - 2)))
+    for race in (0, 1):
+        h, slope = _heights(surf, race, np.zeros(3), ball=np.array([0, 1, 2]))
+        np.testing.assert_array_equal(h, [0.0, 1.5e-6, 0.0])
+        assert np.all(slope == 0.0)
+
+
+exu = pytest.importorskip("exudyn")
+
+
+def _state(**kw):
+    from tests.test_compiled import _scene
+
+    return _scene(axialForce=2200.0, radialForce=2000.0, **kw)
+
+
+def test_oversize_ball_carries_more_in_both_force_paths():
+    """Ball 3 made 2 um larger: its inner and outer approach grow by exactly 1 um (compiled
+    kernel outputs), nothing else moves; the numpy path's loads agree."""
+    from tests.test_compiled import _both_paths
+
+    extra = np.zeros(B.balls)
+    extra[3] = 2e-6
+    pens = []
+    for surface in (SurfaceModel(), SurfaceModel(waviness=Waviness(ball_diameter_variation=tuple(extra)))):
+        _sc, con, q, qt = _state(surface=surface)
+        con.residual_forces(0.01, q - con.reference, qt)
+        pens.append(con._compiled.penetration.reshape(2, -1).copy())
+        single, fast, ref = _both_paths(con, q, qt)
+        np.testing.assert_allclose(single, ref, rtol=0, atol=1e-6 * np.max(np.abs(ref)))
+    diff = pens[1] - pens[0]
+    np.testing.assert_allclose(diff[:, 3], 1e-6, rtol=1e-6)
+    assert np.all(diff[:, np.arange(B.balls) != 3] == 0.0)
+
+
+def test_a_defect_no_ball_touches_leaves_every_force_bit_for_bit():
+    """The surface term is a separate branch: where it gives h = 0 the contact is computed
+    exactly as for a perfect bearing (the feature costs nothing when off)."""
+    _sc, con0, q, qt = _state()
+    psi = np.degrees(np.arctan2(q[1], q[0]))  # ball 0's azimuth; the next ball is 22.5 degrees on
+    far = SurfaceModel((Defect("outer", psi + 11.25, 0.1e-3, 5e-6),))
+    _sc1, con1, q1, qt1 = _state(surface=far)
+    np.testing.assert_array_equal(q, q1)
+    for path in range(3):
+        from tests.test_compiled import _both_paths
+
+        np.testing.assert_array_equal(_both_paths(con0, q, qt)[path], _both_paths(con1, q, qt)[path])
