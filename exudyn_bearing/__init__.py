@@ -22,7 +22,7 @@ from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
 from .model.assembly import SettleShaft
 from .model.builder import BearingHandle, CreateAngularContactBearing
-from .presets import (ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
+from .presets import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
                       REFERENCE_DRAG, REFERENCE_LUBRICANT, REFERENCE_SPEED_RPM, SPINDLE_40MM_BEARING)
 from .results.outputs import BearingResults, settled_label
 from .results.plots import plot_run, plot_skid_curve
@@ -41,7 +41,7 @@ __all__ = [
     # bearings, lubricants, physics options and presets
     "Bearing", "Material", "STEEL", "M50_STEEL", "Lubricant", "BallDrag", "CageModel", "ContactLaw",
     "REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM",
-    "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG",
+    "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG", "CWRU_6205_BEARING",
     # bearing files
     "BearingFile", "load_bearing", "loads_bearing", "save_bearing", "dumps_bearing",
     # solvers without time integration

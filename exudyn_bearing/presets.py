@@ -8,7 +8,8 @@ from contact.lubricant import REFERENCE_LUBRICANT, Lubricant
 from .bearing import STEEL, BallDrag, Bearing, Material
 
 __all__ = ["REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM", "Lubricant",
-           "M50_STEEL", "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG"]
+           "M50_STEEL", "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG",
+           "CWRU_6205_BEARING"]
 
 REFERENCE_BEARING = Bearing(
     balls=16,  # paper table 1a
@@ -62,3 +63,11 @@ ESTER_TURBINE_OIL = Lubricant(viscosity=3.2e-3, reference_temperature=121.0, pre
 
 #: Jet- or mist-lubricated high-speed bearing: 0.5 % oil in the oil-air mixture (issue 19).
 HIGH_SPEED_DRAG = BallDrag(drag_coefficient=0.5, oil_volume_fraction=0.005)
+
+#: The drive-end 6205-2RS JEM SKF deep-groove bearing of the Case Western Reserve University
+#: bearing data (MODEL.md §13d): 9 balls of 7.94 mm on a 39.04-mm pitch circle, 0 deg (their
+#: fault-frequency table: BPFO 3.5848, BPFI 5.4152, BSF 2.357, FTF 0.39828 x shaft speed).
+# The groove radii are not published: 0.515 / 0.525 are typical deep-groove conformities;
+# the zero contact angle means zero clearance.
+CWRU_6205_BEARING = Bearing(balls=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3, inner_conformity=0.515,
+                            outer_conformity=0.525, contact_angle=0.0)

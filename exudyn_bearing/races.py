@@ -12,6 +12,12 @@ Use the factory functions:
     (loaded by the bearing's applied forces) or ``'fixed'``.
 ``Free(rpm=0)``
     A new, unconstrained rigid body (initial speed ``rpm``).
+``Housing(frequency=3000, mass=2, dampingRatio=0.05)``
+    The outer race on a housing (vibration, MODEL.md §13a): a new body of ``mass`` (kg,
+    ring included) whose rotation is held and whose centre sits on isotropic spring-dampers
+    to ground, tuned to ``frequency`` (Hz; or an explicit ``stiffness`` N/m) at
+    ``dampingRatio`` of critical, so that impacts ring a resonance as on a machine. The
+    springs start preloaded by the bearing's applied forces (no start transient).
 ``OnBody(bodyNumber, localPosition, localRotation)``
     An existing Exudyn rigid body (shaft, housing, gear) with any rigid-body node type; the
     race frame sits at ``localPosition`` with ``localRotation`` (its third column is the
@@ -31,7 +37,7 @@ import numpy as np
 
 from .bearing import Bearing
 
-__all__ = ["Race", "Fixed", "Driven", "Free", "OnBody", "race_ring_section"]
+__all__ = ["Race", "Fixed", "Driven", "Free", "Housing", "OnBody", "race_ring_section"]
 
 
 @dataclass(frozen=True)
@@ -47,10 +53,11 @@ class Race:
     local_rotation: tuple = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
     mass: float | None = None  #: kg, created bodies; default from the ring's size
     inertia: tuple | None = None  #: (I_radial, I_axial), kg m², created bodies
+    support: tuple | None = None  #: (stiffness N/m, damping N s/m) of a housing's springs to ground
 
     def __post_init__(self) -> None:
-        if self.kind not in ("fixed", "driven", "free", "body"):
-            raise ValueError(f"kind must be 'fixed', 'driven', 'free' or 'body', got {self.kind!r}")
+        if self.kind not in ("fixed", "driven", "free", "body", "housing"):
+            raise ValueError(f"kind must be 'fixed', 'driven', 'free', 'body' or 'housing', got {self.kind!r}")
         if not callable(self.rpm) and not (isinstance(self.rpm, (int, float)) and math.isfinite(self.rpm)):
             raise ValueError(f"rpm must be a finite number or a function of time, got {self.rpm!r}")
         if callable(self.rpm) and self.kind not in ("fixed", "driven"):
@@ -87,6 +94,23 @@ def Driven(rpm, translation: str = "free", mass: float | None = None, inertia=No
 def Free(rpm: float = 0.0, mass: float | None = None, inertia=None) -> Race:
     """New, unconstrained race body with initial speed ``rpm``."""
     return Race("free", rpm=rpm, mass=mass, inertia=inertia)
+
+
+def Housing(frequency: float = 3000.0, mass: float = 2.0, dampingRatio: float = 0.05,
+            stiffness: float | None = None) -> Race:
+    """Outer race on a housing of ``mass`` (kg, ring included) carried by isotropic
+    spring-dampers to ground: stiffness ``stiffness`` (N/m) or m (2π ``frequency``)² for a
+    resonance at ``frequency`` Hz, damping 2 ``dampingRatio`` √(k m) (MODEL.md §13a). Its
+    rotation is held; it does not turn."""
+    for key, value in (("frequency", frequency), ("mass", mass), ("dampingRatio", dampingRatio)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0 \
+                or (value == 0 and key != "dampingRatio"):
+            raise ValueError(f"Housing: {key} must be {'>= 0' if key == 'dampingRatio' else 'positive'}, got {value!r}")
+    if stiffness is not None and not (isinstance(stiffness, (int, float)) and math.isfinite(stiffness)
+                                      and stiffness > 0):
+        raise ValueError(f"Housing: stiffness must be positive, got {stiffness!r}")
+    k = float(stiffness) if stiffness is not None else mass * (2.0 * math.pi * frequency) ** 2
+    return Race("housing", mass=float(mass), support=(k, 2.0 * dampingRatio * math.sqrt(k * mass)))
 
 
 def OnBody(bodyNumber: int, localPosition=(0.0, 0.0, 0.0), localRotation=np.eye(3)) -> Race:

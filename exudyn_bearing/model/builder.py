@@ -202,6 +202,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                                  "nodes of type " + ", ".join(NODE_KINEMATICS) + ": create that body with "
                                  "nodeType=exu.NodeType.RotationEulerParameters (Exudyn's default) or "
                                  "RotationRotationVector")
+    if inner.kind == "housing":
+        raise ValueError("innerRace: Housing() carries an outer race; give it as outerRace")
     axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
     axial, radial = float(axial_of_t(0.0)), float(radial_of_t(0.0))
     loaded = bool(axial or radial) or callable(axialForce) or callable(radialForce)
@@ -334,6 +336,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         nodes.append(cage_node)
     race_items = {"inner": (None, None), "outer": (None, None)}
     race_frames, held, driven = {}, {}, {}
+    housing_spring = None
     for name, race, shift in (("inner", inner, relative[:3]), ("outer", outer, np.zeros(3))):
         if race.kind == "fixed":
             continue
@@ -356,6 +359,15 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                 held[len(nodes)] = "all" if race.fixed_translation else "rotation"
                 if callable(race.rpm):
                     driven[len(nodes)] = (race, i_a)
+            elif race.kind == "housing":
+                held[len(nodes)] = "rotation"
+                stiffness, damping = race.support
+                # preloaded by the applied forces at t = 0: the housing starts in balance
+                # (Exudyn's spring force on its second body is -k (Δp - offset))
+                preload = -frame @ np.array([radial_of_t(0.0), 0.0, axial_of_t(0.0)]) / stiffness
+                housing_spring = mbs.CreateCartesianSpringDamper(
+                    itemNumbers=[mbs.CreateGround(referencePosition=list(origin), show=False), body],
+                    stiffness=[stiffness] * 3, damping=[damping] * 3, offset=list(preload), show=False)
         race_items[name] = (body, node)
         layout[name] = len(nodes)
         nodes.append(node)
@@ -396,7 +408,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         sensor = mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
-                         connector, nodes, loads, steady, quasi)
+                         connector, nodes, loads, steady, quasi, housing_spring)
 
 
 def _register_on_main_system():

@@ -45,6 +45,8 @@ class BearingHandle:
     #: under combined load, the :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates` the run
     #: starts from, or None
     initialQuasiDynamicState: object = field(repr=False, default=None)
+    #: the housing's spring-damper to ground (``races.Housing`` outer race), else None
+    housingSpring: int | None = None
 
     def Inputs(self, **settings) -> dict:
         """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,
@@ -126,6 +128,32 @@ class BearingHandle:
             sensors[name] = mbs.AddSensor(SensorUserFunction(sensorUserFunction=user_function, storeInternal=storeInternal,
                                                              writeToFile=writeToFile, name=f"bearing_{name}", **kw))
         return sensors
+
+    def AddVibrationSensors(self, mbs, outputs=("Acceleration", "Velocity", "Displacement"),
+                            storeInternal: bool = True, writeToFile: bool = False) -> dict:
+        """Exudyn body sensors of the outer race's body (a ``races.Housing`` or your housing
+        through ``races.OnBody``) at the bearing centre, global frame: 'Acceleration' (m/s²),
+        'Velocity' (m/s), 'Displacement' (m, from the start). Sampled at the sensors' write
+        period (``simulationSettings.solutionSettings.sensorsWritePeriod``: 5e-5 s for 20 kHz).
+        Returns {output: sensor number}; call before ``mbs.Assemble()``."""
+        import exudyn as exu
+        from exudyn.utilities import SensorBody
+
+        if self.outerRaceBody is None:
+            raise ValueError("AddVibrationSensors: the outer race is a kinematic Fixed() race; give "
+                             "outerRace=races.Housing() or races.OnBody(your housing body)")
+        allowed = ("Acceleration", "Velocity", "Displacement")
+        if not outputs or any(o not in allowed for o in outputs):
+            raise ValueError(f"outputs: choose from {allowed}, got {list(outputs)!r}")
+        from ..races import node_state
+
+        body = self.outerRaceBody
+        frame_pos, frame_rot, _, _ = node_state(mbs, self.outerRaceNode)
+        local = frame_rot.T @ (self.connector.origin - frame_pos)  # the bearing centre on that body
+        return {name: mbs.AddSensor(SensorBody(bodyNumber=body, localPosition=list(local), storeInternal=storeInternal,
+                                               writeToFile=writeToFile, name=f"housing_{name}",
+                                               outputVariableType=getattr(exu.OutputVariableType, name)))
+                for name in outputs}
 
     def PlotSensors(self, mbs, sensors: dict, outputs=None, **kwargs):
         """``mbs.PlotSensor`` of sensors from :meth:`AddSensors` (``outputs``: a subset of its

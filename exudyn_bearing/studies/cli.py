@@ -125,6 +125,56 @@ def _simulate(args) -> int:
     return 0
 
 
+def _vibration(args) -> int:
+    from pathlib import Path
+
+    from ..races import Housing
+    from .vibration import plot_vibration, vibration, write_signal
+
+    if args.axial == 0 and args.radial == 0:
+        raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
+    setup = _setup(args.bearing)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
+                       sample_rate=args.sample_rate, settle=args.settle, band=tuple(args.band) if args.band else None,
+                       housing=Housing(frequency=args.housing_frequency, mass=args.housing_mass,
+                                       dampingRatio=args.housing_damping))
+    signal = out / "signal.csv"
+    write_signal(result, signal)
+    data = result.to_dict() | {"signal": str(signal)}
+    if args.plot:
+        plot_vibration(result, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm")
+        data["plot"] = str(args.plot)
+    (out / "vibration.json").write_text(json.dumps(data, indent=1), encoding="utf-8")
+    if args.json:
+        json.dump(data, sys.stdout, indent=1)
+        print()
+        return 0
+    b = setup.bearing
+    surf = setup.surface
+    print(f"Vibration run (MODEL.md §13): Z={b.balls}, D={b.ball_diameter * 1e3:g} mm, d_m={b.pitch_diameter * 1e3:g} mm; "
+          f"axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, {args.time:g} s at "
+          f"{args.sample_rate:g} Hz (the first {args.settle:g} s left out)")
+    for i, d in enumerate(surf.defects):
+        reach = d.reach(b.ball_radius)
+        note = "" if reach >= d.depth else f"; a ball reaches {reach * 1e6:.2f} um of its {d.depth * 1e6:g} um depth"
+        print(f"  defect {i}: {d.race} race at {d.angle_deg:g} deg, {d.length * 1e3:g} mm long{note}")
+    if surf.waviness.active:
+        print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}")
+    print(f"  kinematic cage slip {result.kinematic_cage_slip_percent:.3f} %")
+    print(f"  {'':6} {'kinematic Hz':>13} {'actual Hz':>11} {'x shaft':>8}")
+    for name in result.fault_frequencies["kinematic"]:
+        k, a = result.fault_frequencies["kinematic"][name], result.fault_frequencies["actual"][name]
+        print(f"  {name:6} {k:13.3f} {a:11.3f} {a / (args.rpm / 60):8.4f}")
+    peaks = ", ".join(f"{f:.2f} Hz ({a:.3g})" for f, a in result.envelope_peaks[:5])
+    print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
+    print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s")
+    if args.plot:
+        print(f"  plot written to {args.plot}")
+    return 0
+
+
 def _steady(args) -> int:
     from ..results.records import units_of
     from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
@@ -368,6 +418,25 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
     p.set_defaults(func=_render)
+
+    p = sub.add_parser("vibration", help="housing vibration with race defects and waviness (MODEL.md §13)")
+    p.add_argument("--bearing", help="bearing TOML file with [[defect]] / [waviness] (default: the reference bearing)")
+    p.add_argument("--rpm", type=float, required=True, help="inner-race speed, rev/min (outer race on the housing)")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)
+    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
+    p.add_argument("--time", type=float, default=0.5, help="simulated time, s")
+    p.add_argument("--settle", type=float, default=0.02, help="start left out of the spectra, s")
+    p.add_argument("--sample-rate", type=float, default=20000.0, help="output sample rate, Hz (the step is at most "
+                                                                        "its period)")
+    p.add_argument("--band", type=float, nargs=2, metavar=("LOW", "HIGH"),
+                   help="envelope band, Hz (default: 0.6-1.4 x the housing resonance)")
+    p.add_argument("--housing-frequency", type=float, default=3000.0, help="housing resonance, Hz")
+    p.add_argument("--housing-mass", type=float, default=2.0, help="housing mass (ring included), kg")
+    p.add_argument("--housing-damping", type=float, default=0.05, help="housing damping ratio")
+    p.add_argument("--out", default="out/vibration", help="output directory (signal.csv, vibration.json)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies")
+    p.set_defaults(func=_vibration)
 
     from . import skidmap
 

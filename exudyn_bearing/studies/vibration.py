@@ -1,0 +1,284 @@
+"""Vibration of a bearing with race surfaces, the way a condition-monitoring engineer reads it
+(MODEL.md §13b): the housing's signal, its spectrum and envelope spectrum, the fault
+frequencies twice — kinematic (geometry and contact angle, pure rolling) and actual (the
+run's cage speed and ball spin, with the skid in them) — and the defect passage events.
+
+:func:`vibration` runs one bearing on a :func:`~exudyn_bearing.races.Housing`;
+the analysis functions take any sampled signal.
+"""
+from __future__ import annotations
+
+import math
+import time as _time
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ..bearing import Bearing
+
+__all__ = ["FAULTS", "kinematic_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
+           "envelope_spectrum", "spectral_peaks", "defect_events", "VibrationResult", "vibration"]
+
+#: the fault frequencies, in the order printed
+FAULTS = ("BPFO", "BPFI", "BSF", "FTF")
+
+
+def kinematic_fault_frequencies(bearing: Bearing, inner_hz: float, outer_hz: float = 0.0,
+                                contact_angle: float | None = None) -> dict:
+    """Pure-rolling fault frequencies, Hz (MODEL.md eq. 13.4): with γ = D cos α / d_m and the
+    relative speed f_r = f_i − f_o, FTF = f_o + f_r (1 − γ)/2 (the cage), BPFO = Z |FTF − f_o|,
+    BPFI = Z |f_i − FTF|, BSF = f_r d_m (1 − γ²) / (2 D) (a ball's spin relative to the cage).
+    ``contact_angle`` rad (default: the bearing's)."""
+    alpha = bearing.contact_angle if contact_angle is None else contact_angle
+    gamma = bearing.ball_diameter * math.cos(alpha) / bearing.pitch_diameter
+    rel = inner_hz - outer_hz
+    ftf = outer_hz + 0.5 * rel * (1.0 - gamma)
+    return {"BPFO": bearing.balls * abs(ftf - outer_hz), "BPFI": bearing.balls * abs(inner_hz - ftf),
+            "BSF": abs(rel) * bearing.pitch_diameter * (1.0 - gamma * gamma) / (2.0 * bearing.ball_diameter),
+            "FTF": abs(ftf)}
+
+
+def actual_fault_frequencies(results, fraction: float = 1.0) -> dict:
+    """The fault frequencies of a run, Hz: from its mean cage speed f_c, race speeds and the
+    balls' spin relative to the cage over the last ``fraction`` of the run (``BearingResults``):
+    BPFO = Z |f_c − f_o|, BPFI = Z |f_i − f_c|, BSF = |ω_ball − ω_c e_z| / 2π, FTF = |f_c|."""
+    n = len(results.time)
+    sl = slice(n - max(int(round(fraction * n)), 1), n)
+    f_c = float(np.mean(results.cage_speed[sl])) / (2 * math.pi)
+    f_i = float(np.mean(results.inner_speed[sl])) / (2 * math.pi)
+    f_o = float(np.mean(results.outer_speed[sl])) / (2 * math.pi)
+    w = results.ball_omega_orbiting[sl].copy()  # (e_psi, e_r, e_z) components
+    w[..., 2] -= results.cage_speed[sl, None]
+    spin = float(np.mean(np.linalg.norm(w, axis=-1))) / (2 * math.pi)
+    z = results.ball_orbital_speed.shape[1]
+    return {"BPFO": z * abs(f_c - f_o), "BPFI": z * abs(f_i - f_c), "BSF": spin, "FTF": abs(f_c)}
+
+
+def amplitude_spectrum(signal, sample_rate: float):
+    """(frequencies Hz, amplitude) of a real signal: Hann window, scaled so that a sine of
+    amplitude A at a bin frequency reads A."""
+    x = np.asarray(signal, dtype=float)
+    x = x - np.mean(x)
+    win = np.hanning(len(x))
+    amp = 2.0 * np.abs(np.fft.rfft(x * win)) / np.sum(win)
+    return np.fft.rfftfreq(len(x), 1.0 / sample_rate), amp
+
+
+def envelope_spectrum(signal, sample_rate: float, band: tuple):
+    """(frequencies Hz, amplitude) of the envelope: band-pass ``band`` (Hz, 4th-order
+    Butterworth, forward and backward), Hilbert envelope, its amplitude spectrum."""
+    from scipy.signal import butter, hilbert, sosfiltfilt
+
+    low, high = band
+    nyquist = 0.5 * sample_rate
+    if not 0 < low < high < nyquist:
+        raise ValueError(f"band: ({low}, {high}) Hz must lie inside (0, {nyquist:g}) Hz, the Nyquist frequency")
+    sos = butter(4, [low, high], btype="bandpass", fs=sample_rate, output="sos")
+    env = np.abs(hilbert(sosfiltfilt(sos, np.asarray(signal, dtype=float))))
+    return amplitude_spectrum(env, sample_rate)
+
+
+def spectral_peaks(freq, amp, count: int = 10, min_hz: float = 0.0, max_hz: float = math.inf) -> list:
+    """The ``count`` strongest local maxima of a spectrum in [min_hz, max_hz], strongest first:
+    [[frequency Hz (interpolated over the three bins), amplitude], ...]."""
+    from scipy.signal import find_peaks
+
+    freq, amp = np.asarray(freq), np.asarray(amp)
+    idx, _ = find_peaks(amp)
+    idx = idx[(freq[idx] >= min_hz) & (freq[idx] <= max_hz)]
+    idx = idx[np.argsort(amp[idx])[::-1][:count]]
+    out = []
+    df = freq[1] - freq[0]
+    for i in idx:  # parabolic interpolation of the peak on the log amplitude (Hann window)
+        a, b, c = np.log(np.maximum(amp[i - 1:i + 2], 1e-300))
+        shift = 0.5 * (a - c) / (a - 2 * b + c) if a - 2 * b + c != 0 else 0.0
+        out.append([float(freq[i] + shift * df), float(amp[i])])
+    return out
+
+
+def defect_events(results, bearing: Bearing, surface) -> list:
+    """Each ball's passages over each defect (MODEL.md §13b): [{"defect": index, "ball": j,
+    "entry_s": the contact reaches the first edge (the ball starts to unload), "exit_s": it
+    reaches the other (the ball strikes it and is re-stressed)}], in time order. The contact's
+    azimuth in the race frame is the ball's azimuth minus the race's turned angle (the time
+    integral of its recorded speed); edge crossings are interpolated between recorded states."""
+    t = np.asarray(results.time)
+    psi = np.unwrap(results.ball_position_angle, axis=0)
+    turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
+    events = []
+    for i, d in enumerate(surface.defects):
+        sign = -1.0 if d.race == "inner" else 1.0
+        rho = 0.5 * bearing.pitch_diameter + sign * bearing.ball_radius * math.cos(bearing.contact_angle)
+        half = 0.5 * d.length / rho  # the defect's half angle on the contact path
+        for j in range(psi.shape[1]):
+            rel = psi[:, j] - turned[d.race] - math.radians(d.angle_deg)
+            forward = rel[-1] >= rel[0]  # the contact runs over the race in this sense
+            first, second = (-half, half) if forward else (half, -half)
+            for n in range(int(np.floor((rel.min() - half) / (2 * math.pi))),
+                           int(np.ceil((rel.max() + half) / (2 * math.pi))) + 1):
+                entries = _crossings(t, rel, 2 * math.pi * n + first)
+                exits = _crossings(t, rel, 2 * math.pi * n + second)
+                for entry in entries:
+                    later = [x for x in exits if x > entry]
+                    if later:
+                        events.append({"defect": i, "ball": j, "entry_s": entry, "exit_s": later[0]})
+    return sorted(events, key=lambda e: e["entry_s"])
+
+
+def _integral(t, rate):
+    return np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(t))])
+
+
+def _crossings(t, x, level):
+    s = x - level
+    k = np.flatnonzero(np.signbit(s[:-1]) != np.signbit(s[1:]))
+    return [float(t[i] + (t[i + 1] - t[i]) * s[i] / (s[i] - s[i + 1])) for i in k]
+
+
+@dataclass
+class VibrationResult:
+    """One vibration run (SI units; see :func:`vibration`)."""
+
+    time: np.ndarray = field(repr=False)  #: s
+    acceleration: np.ndarray = field(repr=False)  #: housing acceleration (T, 3), bearing frame, m/s²
+    velocity: np.ndarray = field(repr=False)  #: m/s
+    displacement: np.ndarray = field(repr=False)  #: m, from the start
+    sample_rate: float  #: Hz
+    band: tuple  #: envelope band, Hz
+    fault_frequencies: dict  #: {"kinematic": {...}, "actual": {...}}, Hz
+    envelope_peaks: list  #: [[Hz, m/s²], ...] strongest first
+    spectrum_peaks: list
+    defect_events: list
+    kinematic_cage_slip_percent: float
+    wall_time_s: float
+    inputs: dict
+    results: object = field(repr=False, default=None)  #: the bearing's BearingResults
+
+    def to_dict(self) -> dict:
+        return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
+                "spectrum_peaks_Hz": self.spectrum_peaks, "defect_events": self.defect_events,
+                "sample_rate_Hz": self.sample_rate, "envelope_band_Hz": list(self.band),
+                "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
+                "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
+                          "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
+                          "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
+                          "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
+                                    "bearing frame's radial axes, z axial)"},
+                "inputs": self.inputs}
+
+
+def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
+              sample_rate: float = 20000.0, housing=None, band: tuple | None = None, settle: float = 0.02,
+              surface=None, settings=None) -> VibrationResult:
+    """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
+    ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
+    analyse the housing acceleration sampled at ``sample_rate`` Hz (the time step is at most
+    its period; MODEL.md §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
+    the housing resonance), fault frequencies, defect passages. The first ``settle`` s are
+    left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
+    the file's."""
+    import exudyn as exu
+
+    from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE, file_inputs
+    from ..model.builder import CreateAngularContactBearing
+    from ..races import Driven, Housing
+    from ..simulation.runner import SolverSettings, run_solver
+
+    if not (math.isfinite(sample_rate) and sample_rate > 0):
+        raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
+    if not (math.isfinite(time) and time > settle >= 0):
+        raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
+    housing = housing or Housing()
+    bearing, (lubricant, law, cage, drag, surface) = file_inputs(
+        bearing, lubricant=FILE_LUBRICANT, contactLaw=FILE_LAW, cage=FILE_CAGE, ballDrag=FILE_DRAG,
+        surface=FILE_SURFACE if surface is None else surface)
+    sc = exu.SystemContainer()
+    mbs = sc.AddSystem()
+    handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=housing,
+                                         axialForce=axial_force, radialForce=radial_force, contactLaw=law, cage=cage,
+                                         ballDrag=drag, surface=surface, show=False)
+    sensors = handle.AddVibrationSensors(mbs)
+    mbs.Assemble()
+    period = 1.0 / sample_rate
+    settings = settings or SolverSettings()
+    step = min(settings.step or handle.RecommendedStep(), period)
+    step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
+    settings = replace(settings, step=step, output_step=period)
+    wall = _time.perf_counter()
+    run_solver(mbs, [handle], time, settings)
+    wall = _time.perf_counter() - wall
+    frame = handle.connector.rotation
+    data = {k: np.asarray(mbs.GetSensorStoredData(s)) for k, s in sensors.items()}
+    t = data["Acceleration"][:, 0]
+    acc, vel, disp = (data[k][:, 1:4] @ frame for k in ("Acceleration", "Velocity", "Displacement"))
+    results = handle.Results(mbs)
+    keep = t >= settle
+    kept = results.time >= settle
+    sub = replace(results, **{k: v[kept] for k, v in vars(results).items()
+                              if isinstance(v, np.ndarray) and v.shape[:1] == results.time.shape})
+    f_i = rpm / 60.0
+    resonance = math.sqrt(housing.support[0] / housing.mass) / (2 * math.pi)
+    band = band or (0.6 * resonance, min(1.4 * resonance, 0.45 * sample_rate))
+    signal = acc[keep, 0] if radial_force else acc[keep, 2]  # along the load
+    if radial_force and axial_force:
+        signal = np.hypot(acc[keep, 0], acc[keep, 2]) * np.sign(acc[keep, 0])
+    f_env, a_env = envelope_spectrum(signal, sample_rate, band)
+    f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
+    faults = {"kinematic": kinematic_fault_frequencies(bearing, f_i), "actual": actual_fault_frequencies(sub)}
+    events = defect_events(results, bearing, surface) if surface is not None and surface.defects else []
+    inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
+                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
+    return VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
+                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
+                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
+                           float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results)
+
+
+def write_signal(result: VibrationResult, path) -> None:
+    """The housing signal as CSV (t s; acceleration m/s², velocity m/s, displacement m; x, y
+    radial along the bearing frame, z axial), its inputs on the first line as a comment."""
+    import json
+
+    header = "# " + json.dumps(result.inputs, default=str) + "\n"
+    cols = ["t_s"] + [f"{q}_{a}_{u}" for q, u in (("acc", "m_s2"), ("vel", "m_s"), ("disp", "m")) for a in "xyz"]
+    table = np.column_stack([result.time, result.acceleration, result.velocity, result.displacement])
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(header + ",".join(cols) + "\n")
+        np.savetxt(fh, table, delimiter=",", fmt="%.9g")
+
+
+def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
+    """Time signal, spectrum and envelope spectrum with the fault frequencies: kinematic
+    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    settle = float(result.inputs.get("settle", 0.0))
+    keep = result.time >= settle
+    axis = 0 if float(result.inputs.get("radial_force", 0.0)) else 2
+    x = result.acceleration[keep, axis]
+    fig, ax = plt.subplots(3, 1, figsize=(9, 9))
+    ax[0].plot(result.time[keep], x, lw=0.5)
+    ax[0].set(xlabel="t (s)", ylabel="housing acceleration (m/s²)", title=title)
+    f, a = amplitude_spectrum(x, result.sample_rate)
+    ax[1].semilogy(f, np.maximum(a, 1e-12), lw=0.6)
+    ax[1].axvspan(*result.band, color="0.9")
+    ax[1].set(xlabel="f (Hz)", ylabel="amplitude (m/s²)", xlim=(0, 0.5 * result.sample_rate))
+    fe, ae = envelope_spectrum(x, result.sample_rate, result.band)
+    ax[2].plot(fe, ae, lw=0.7, color="k")
+    fmax = 4.2 * max(result.fault_frequencies["kinematic"]["BPFI"], result.fault_frequencies["kinematic"]["BPFO"])
+    colors = {"BPFO": "tab:red", "BPFI": "tab:blue", "BSF": "tab:green", "FTF": "tab:orange"}
+    for kind, style in (("kinematic", "--"), ("actual", "-")):
+        for name, value in result.fault_frequencies[kind].items():
+            mult = (2,) if name == "BSF" else (1, 2, 3) if name in ("BPFO", "BPFI") else (1,)
+            for m in mult:
+                ax[2].axvline(m * value, ls=style, lw=0.8, color=colors[name], alpha=0.8,
+                              label=f"{name} {kind}" if m == mult[0] else None)
+    ax[2].set(xlabel="f (Hz)", ylabel="envelope amplitude (m/s²)", xlim=(0, fmax),
+              title=f"envelope spectrum, band {result.band[0]:.0f}–{result.band[1]:.0f} Hz")
+    ax[2].legend(fontsize=7, ncol=4)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
