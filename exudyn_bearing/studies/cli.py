@@ -163,10 +163,13 @@ def _vibration(args) -> int:
     if surf.waviness.active:
         print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}")
     print(f"  kinematic cage slip {result.kinematic_cage_slip_percent:.3f} %")
-    print(f"  {'':6} {'kinematic Hz':>13} {'actual Hz':>11} {'x shaft':>8}")
-    for name in result.fault_frequencies["kinematic"]:
-        k, a = result.fault_frequencies["kinematic"][name], result.fault_frequencies["actual"][name]
-        print(f"  {name:6} {k:13.3f} {a:11.3f} {a / (args.rpm / 60):8.4f}")
+    print(f"  fault frequencies: nominal (catalogue formula, nominal contact angle), kinematic (pure rolling at the "
+          f"run's contact geometry), actual (the run's cage and ball speeds)")
+    print(f"  {'':6} {'nominal Hz':>11} {'kinematic Hz':>13} {'actual Hz':>11} {'actual x shaft':>15}")
+    faults = result.fault_frequencies
+    for name in faults["kinematic"]:
+        print(f"  {name:6} {faults['nominal'][name]:11.3f} {faults['kinematic'][name]:13.3f} "
+              f"{faults['actual'][name]:11.3f} {faults['actual'][name] / (args.rpm / 60):15.4f}")
     peaks = ", ".join(f"{f:.2f} Hz ({a:.3g})" for f, a in result.envelope_peaks[:5])
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s")

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..bearing import Bearing
 
-__all__ = ["FAULTS", "kinematic_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
+__all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
            "envelope_spectrum", "spectral_peaks", "defect_events", "VibrationResult", "vibration"]
 
 #: the fault frequencies, in the order printed
@@ -36,6 +36,22 @@ def kinematic_fault_frequencies(bearing: Bearing, inner_hz: float, outer_hz: flo
     return {"BPFO": bearing.balls * abs(ftf - outer_hz), "BPFI": bearing.balls * abs(inner_hz - ftf),
             "BSF": abs(rel) * bearing.pitch_diameter * (1.0 - gamma * gamma) / (2.0 * bearing.ball_diameter),
             "FTF": abs(ftf)}
+
+
+def rolling_fault_frequencies(results, bearing: Bearing) -> dict:
+    """Pure-rolling fault frequencies at the run's own contact geometry, Hz: FTF the mean of
+    each ball's pure-rolling orbital speed for its actual contact points and spin axis
+    (``kinematic_cage_speed``, MODEL.md §7), BPFO = Z |FTF − f_o|, BPFI = Z |f_i − FTF|, BSF
+    by eq. 13.4 at the mean loaded outer contact angle. The actual frequencies sit below
+    them by the run's kinematic cage slip."""
+    f_c = float(np.mean(results.kinematic_cage_speed)) / (2 * math.pi)
+    f_i = float(np.mean(results.inner_speed)) / (2 * math.pi)
+    f_o = float(np.mean(results.outer_speed)) / (2 * math.pi)
+    load = results.outer["load"]
+    alpha = float(np.sum(results.outer["contact_angle"] * load) / max(np.sum(load), 1e-300))
+    bsf = kinematic_fault_frequencies(bearing, f_i, f_o, contact_angle=alpha)["BSF"]
+    return {"BPFO": bearing.balls * abs(f_c - f_o), "BPFI": bearing.balls * abs(f_i - f_c), "BSF": bsf,
+            "FTF": abs(f_c)}
 
 
 def actual_fault_frequencies(results, fraction: float = 1.0) -> dict:
@@ -98,10 +114,14 @@ def spectral_peaks(freq, amp, count: int = 10, min_hz: float = 0.0, max_hz: floa
 
 def defect_events(results, bearing: Bearing, surface) -> list:
     """Each ball's passages over each defect (MODEL.md §13b): [{"defect": index, "ball": j,
-    "entry_s": the contact reaches the first edge (the ball starts to unload), "exit_s": it
-    reaches the other (the ball strikes it and is re-stressed)}], in time order. The contact's
-    azimuth in the race frame is the ball's azimuth minus the race's turned angle (the time
-    integral of its recorded speed); edge crossings are interpolated between recorded states."""
+    "entry_s": the contact reaches the entry edge, where the ball starts to unload,
+    "exit_s": it reaches the exit edge}], in time order. The ball is struck on the exit side
+    and re-stressed at or before ``exit_s``: where the exit edge's circle (eq. 13.2) comes back
+    up to the depth the ball had sunk to, at most √(d (2 r − d)) before the edge.
+
+    The contact's azimuth in the race frame is the ball's azimuth minus the race's turned angle
+    (the time integral of its recorded speed); edge crossings are interpolated between
+    recorded states."""
     t = np.asarray(results.time)
     psi = np.unwrap(results.ball_position_angle, axis=0)
     turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
@@ -116,9 +136,8 @@ def defect_events(results, bearing: Bearing, surface) -> list:
             first, second = (-half, half) if forward else (half, -half)
             for n in range(int(np.floor((rel.min() - half) / (2 * math.pi))),
                            int(np.ceil((rel.max() + half) / (2 * math.pi))) + 1):
-                entries = _crossings(t, rel, 2 * math.pi * n + first)
                 exits = _crossings(t, rel, 2 * math.pi * n + second)
-                for entry in entries:
+                for entry in _crossings(t, rel, 2 * math.pi * n + first):
                     later = [x for x in exits if x > entry]
                     if later:
                         events.append({"defect": i, "ball": j, "entry_s": entry, "exit_s": later[0]})
@@ -145,7 +164,9 @@ class VibrationResult:
     displacement: np.ndarray = field(repr=False)  #: m, from the start
     sample_rate: float  #: Hz
     band: tuple  #: envelope band, Hz
-    fault_frequencies: dict  #: {"kinematic": {...}, "actual": {...}}, Hz
+    #: Hz: {"kinematic": pure rolling at the run's contact geometry, "actual": the run's,
+    #: "nominal": the catalogue formula at the nominal contact angle}
+    fault_frequencies: dict
     envelope_peaks: list  #: [[Hz, m/s²], ...] strongest first
     spectrum_peaks: list
     defect_events: list
@@ -209,8 +230,12 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     wall = _time.perf_counter() - wall
     frame = handle.connector.rotation
     data = {k: np.asarray(mbs.GetSensorStoredData(s)) for k, s in sensors.items()}
-    t = data["Acceleration"][:, 0]
-    acc, vel, disp = (data[k][:, 1:4] @ frame for k in ("Acceleration", "Velocity", "Displacement"))
+    # the sensors are written at the step ends nearest each sample (a cut step shifts them):
+    # the signal on the uniform grid, interpolated linearly
+    raw = data["Acceleration"][:, 0]
+    t = np.arange(int(math.floor(raw[-1] * sample_rate + 1e-6)) + 1) / sample_rate
+    acc, vel, disp = (np.column_stack([np.interp(t, data[k][:, 0], data[k][:, 1 + i]) for i in range(3)]) @ frame
+                      for k in ("Acceleration", "Velocity", "Displacement"))
     results = handle.Results(mbs)
     keep = t >= settle
     kept = results.time >= settle
@@ -224,7 +249,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
         signal = np.hypot(acc[keep, 0], acc[keep, 2]) * np.sign(acc[keep, 0])
     f_env, a_env = envelope_spectrum(signal, sample_rate, band)
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
-    faults = {"kinematic": kinematic_fault_frequencies(bearing, f_i), "actual": actual_fault_frequencies(sub)}
+    faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
+              "nominal": kinematic_fault_frequencies(bearing, f_i)}
     events = defect_events(results, bearing, surface) if surface is not None and surface.defects else []
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)

@@ -1,0 +1,258 @@
+"""Vibration with race surfaces (MODEL.md §13) against numbers the code did not produce: the
+published CWRU fault-frequency table, the waviness selection rules derived here by summing
+the Z ball forces, Sunnersjö's varying compliance at Z f_c, a defect's envelope line at the
+run's actual cage speed, and a notch passage against its geometry."""
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from contact.surface import Defect, SurfaceModel, Waviness
+from exudyn_bearing import CWRU_6205_BEARING, REFERENCE_BEARING
+from exudyn_bearing.studies.vibration import (amplitude_spectrum, envelope_spectrum, kinematic_fault_frequencies,
+                                              spectral_peaks)
+
+exu = pytest.importorskip("exudyn")
+
+
+def test_kinematic_fault_frequencies_are_the_cwru_table():
+    """Case Western Reserve's drive-end 6205 (9 balls of 0.3126 in on a 1.537-in pitch, 0 deg):
+    BPFO 3.5848, BPFI 5.4152, rolling element (2 BSF) 4.7135, FTF 0.39828 x shaft speed."""
+    f = kinematic_fault_frequencies(CWRU_6205_BEARING, 1.0)
+    assert f["BPFO"] == pytest.approx(3.5848, abs=2e-4)
+    assert f["BPFI"] == pytest.approx(5.4152, abs=2e-4)
+    assert 2 * f["BSF"] == pytest.approx(4.7135, abs=2e-3)
+    assert f["FTF"] == pytest.approx(0.39828, abs=1e-4)
+
+
+def test_envelope_of_a_modulated_resonance_finds_the_modulation():
+    """Impulses at 107 Hz ringing a 3-kHz resonance: the envelope spectrum's strongest line
+    is 107 Hz to a tenth of a bin (peak interpolation), the plain spectrum's is the resonance."""
+    fs, rate = 20000.0, 107.0
+    t = np.arange(int(0.5 * fs)) / fs
+    since = (t * rate) % 1.0 / rate
+    x = np.exp(-since * 600.0) * np.sin(2 * np.pi * 3000.0 * since)
+    f, a = amplitude_spectrum(x, fs)
+    assert abs(f[np.argmax(a)] - 3000.0) < 120.0
+    fe, ae = envelope_spectrum(x, fs, (2000.0, 4000.0))
+    assert spectral_peaks(fe, ae, 1, min_hz=1.0)[0][0] == pytest.approx(rate, abs=0.2)
+
+
+# -- waviness selection: derived here, then simulated -----------------------------------------
+
+def derived_lines(race_speed, k, z, f_c, alpha):
+    """The force lines that waviness of order k on a race turning at ``race_speed`` (Hz)
+    makes when Z balls at psi_j = 2 pi f_c t + 2 pi j / Z press on it with a load perturbation
+    proportional to cos(k theta_j + phi), theta_j = psi_j - 2 pi race_speed t, along their
+    contact normals n_j = (cos a cos psi_j, cos a sin psi_j, sin a). Each product of
+    exponentials gives one frequency; its weight is the sum over the Z balls of the phase
+    factors, computed here: {'radial': [(signed frequency of F_x + i F_y, weight)], 'axial':
+    [(frequency, weight)]} with the weights that do not vanish."""
+    beta = 2 * np.pi * np.arange(z) / z
+    out = {"radial": [], "axial": []}
+    # cos(x) e^{i psi} = (e^{i(x + psi)} + e^{-i(x - psi)}) / 2, x = k theta + phi
+    for sign, freq in ((1, (k + 1) * f_c - k * race_speed), (-1, -(k - 1) * f_c + k * race_speed)):
+        weight = abs(np.sum(np.exp(1j * sign * (k + sign) * beta))) * math.cos(alpha) / 2
+        if weight > 1e-9:
+            out["radial"].append((freq, weight))
+    weight = abs(np.sum(np.exp(1j * k * beta))) * math.sin(alpha)
+    if weight > 1e-9:
+        out["axial"].append((abs(k * (f_c - race_speed)), weight))
+    return out
+
+
+def _line(t, x, f):
+    """Amplitude of the component of x (real: cosine amplitude; complex: e^{i 2 pi f t}) at f,
+    Hann window, a drift (quadratic) removed first."""
+    fit = np.polynomial.polynomial.polyfit(t, x.real, 2) if np.isrealobj(x) else None
+    if fit is not None:
+        x = x - np.polynomial.polynomial.polyval(t, fit)
+    else:
+        x = (x.real - np.polynomial.polynomial.polyval(t, np.polynomial.polynomial.polyfit(t, x.real, 2))
+             + 1j * (x.imag - np.polynomial.polynomial.polyval(t, np.polynomial.polynomial.polyfit(t, x.imag, 2))))
+    w = np.hanning(len(t))
+    return (2.0 if np.isrealobj(x) else 1.0) * abs(np.sum(x * w * np.exp(-2j * np.pi * f * t))) / np.sum(w)
+
+
+def _waviness_run(race, k, amplitude=0.03e-6, end=0.12, settle=0.02):
+    from exudyn_bearing import CreateAngularContactBearing, races
+    from exudyn_bearing.simulation.runner import SolverSettings, run_solver
+
+    sc = exu.SystemContainer()
+    mbs = sc.AddSystem()
+    surface = SurfaceModel(waviness=Waviness(**{race: ((k, amplitude, 30.0),)}) if k else Waviness())
+    h = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), axialForce=1300.0, surface=surface,
+                                    show=False)
+    mbs.Assemble()
+    run_solver(mbs, [h], end, SolverSettings(output_step=1e-4))
+    r = h.Results(mbs)
+    keep = r.time >= settle
+    return r.time[keep], r.outer_race_force[keep], float(np.mean(r.cage_speed[keep])) / (2 * np.pi)
+
+
+@pytest.mark.parametrize("race", ["outer", "inner"])
+def test_waviness_selection_rules(race):
+    """Pure axial load on the reference bearing (Z = 16), waviness of 0.03 um on one race: the
+    force on the outer race has exactly the lines the derivation above gives — radial ones for
+    k = Z +- 1, axial ones for k = Z, none (>= 40 dB down) for an order the derivation
+    rejects (7). Outer race: all at Z f_c; inner race: at Z (f_i - f_c), the radial ones
+    shifted by the shaft frequency (the f_i sidebands). The derivation is linear in the
+    waviness: k = Z +- 1 also gives an axial line of second order (the race's radial motion
+    times the waviness; -39 dB at 0.05 um on the inner race), hence the small amplitude; and
+    a perfect bearing has small lines of its own (its balls' axial motion at 300 and 600 Hz,
+    0.1 N), which leak into a short window: 0.1 s keeps them 49 dB below the inner race's
+    axial line at 268 Hz."""
+    z, f_i = REFERENCE_BEARING.balls, 30.0
+    race_speed = 0.0 if race == "outer" else f_i
+    alpha = REFERENCE_BEARING.contact_angle
+    measured = {}
+    for k in (z - 1, z, z + 1, 7):
+        t, force, f_c = _waviness_run(race, k)
+        lines = derived_lines(race_speed, k, z, f_c, alpha)
+        radial = [(f, _line(t, force[:, 0] + 1j * force[:, 1], f)) for f, _ in lines["radial"]]
+        axial = [(f, _line(t, force[:, 2], f)) for f, _ in lines["axial"]]
+        # where a line would sit if any: the fundamental of each kind
+        fundamental = z * abs(f_c - race_speed)
+        measured[k] = {"lines": lines, "radial": radial, "axial": axial, "f_c": f_c,
+                       "radial_at": [_line(t, force[:, 0] + 1j * force[:, 1], s * (fundamental + d))
+                                     for s in (1, -1) for d in ((0.0,) if race == "outer" else (f_i, -f_i))],
+                       "axial_at": _line(t, force[:, 2], fundamental)}
+    # the derivation: k = Z +- 1 radial only, k = Z axial only, 7 nothing
+    assert [len(measured[k]["lines"]["radial"]) for k in (z - 1, z, z + 1, 7)] == [1, 0, 1, 0]
+    assert [len(measured[k]["lines"]["axial"]) for k in (z - 1, z, z + 1, 7)] == [0, 1, 0, 0]
+    for k in (z - 1, z + 1):
+        (freq, _), = measured[k]["lines"]["radial"]
+        f_c = measured[k]["f_c"]
+        want = z * (f_c - race_speed) if race == "outer" else None
+        if want is not None:
+            assert abs(freq) == pytest.approx(abs(want))
+        else:  # Z (f_i - f_c) +- f_i
+            assert min(abs(abs(freq) - (z * (f_i - f_c) + s * f_i)) for s in (1, -1)) < 1e-9
+    radial_line = min(measured[k]["radial"][0][1] for k in (z - 1, z + 1))
+    axial_line = measured[z]["axial"][0][1]
+    assert radial_line > 0.03 and axial_line > 0.03  # N: present
+    for k in (z, 7):  # no radial line
+        assert max(measured[k]["radial_at"]) < 0.01 * radial_line, (k, measured[k]["radial_at"], radial_line)
+    for k in (z - 1, z + 1, 7):  # no axial line
+        assert measured[k]["axial_at"] < 0.01 * axial_line, (k, measured[k]["axial_at"], axial_line)
+
+
+# -- local defects and varying compliance, through the vibration run ---------------------------
+
+def test_perfect_bearing_under_radial_load_vibrates_at_the_ball_pass_frequency():
+    """Varying compliance (Sunnersjö 1978): a perfect 6205 under 300 N radial on its housing;
+    the strongest line of the housing displacement below 1 kHz is Z f_c of the run."""
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.12, sample_rate=10000.0)
+    f, a = amplitude_spectrum(r.displacement[r.time >= 0.02, 0], r.sample_rate)
+    (peak, amp), = spectral_peaks(f, a, 1, min_hz=20.0, max_hz=1000.0)
+    bpfo = r.fault_frequencies["actual"]["BPFO"]
+    assert peak == pytest.approx(bpfo, abs=0.15 * (f[1] - f[0]))
+    assert r.defect_events == []
+
+
+def test_outer_race_defect_repeats_at_the_actual_cage_speed_below_pure_rolling():
+    """A 1-mm, 5-um outer-race spall on the reference bearing at 1300 N, 1800 rpm (3.8 %
+    kinematic cage slip): the envelope spectrum's strongest line is Z f_c of the run, below
+    the pure-rolling BPFO by that slip; one passage per ball and cage revolution."""
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(REFERENCE_BEARING, rpm=1800, axial_force=1300.0, time=0.25, sample_rate=10000.0,
+                  surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 5e-6),)))
+    line = r.envelope_peaks[0][0]
+    actual, rolling = r.fault_frequencies["actual"]["BPFO"], r.fault_frequencies["kinematic"]["BPFO"]
+    slip = r.kinematic_cage_slip_percent
+    assert slip > 2.0
+    assert rolling - actual == pytest.approx(rolling * slip / 100, rel=0.1)
+    assert abs(line - actual) < 0.1 * (rolling - actual)
+    passages = len(r.defect_events)
+    assert abs(passages - actual * (r.time[-1] - r.time[0])) <= 1.0
+
+
+def test_notch_passage_follows_its_geometry():
+    """A 1.5-mm notch, 20 um deep, on the outer race of the 6205 at 300 N radial, 5-us steps.
+    The passage of the ball under the load (``defect_events``) lasts L / ((d_m/2 + r) w_c);
+    in its contact-load trace the ball starts to unload when its contact reaches the entry
+    edge (2 % of its load gone where the edge's circle has dropped 1.3 % of its approach), and after it has lost contact it is struck again on the exit side no earlier than
+    where the exit edge's circle reaches the notch's depth, √(d (2 r − d)) before the edge
+    (eq. 13.2), and no later than the edge."""
+    from exudyn_bearing import CreateAngularContactBearing, races
+    from exudyn_bearing.simulation.runner import SolverSettings, run_solver
+    from exudyn_bearing.studies.vibration import defect_events
+
+    b = CWRU_6205_BEARING
+    length, depth, r_b = 1.5e-3, 20e-6, CWRU_6205_BEARING.ball_radius
+    surface = SurfaceModel((Defect("outer", 20.0, length, depth),))
+    sc = exu.SystemContainer()
+    mbs = sc.AddSystem()
+    h = CreateAngularContactBearing(mbs, b, innerRace=races.Driven(1797), radialForce=300.0, show=False,
+                                    surface=surface)
+    mbs.Assemble()
+    dt = 5e-6
+    run_solver(mbs, [h], 0.006, SolverSettings(step=dt, output_step=dt))
+    r = h.Results(mbs)
+    j = int(np.argmax(r.outer["load"][0]))  # the ball under the load, 20 degrees before the notch
+    (event,) = [e for e in defect_events(r, b, surface) if e["ball"] == j]
+    w_c = float(np.mean(r.cage_speed))
+    speed = (0.5 * b.pitch_diameter + r_b) * w_c  # the contact's speed over the outer race
+    assert event["exit_s"] - event["entry_s"] == pytest.approx(length / speed, rel=5e-3)
+    load, t = r.outer["load"][:, j], r.time
+    before = load[np.searchsorted(t, event["entry_s"]) - 20]
+    unloading = np.flatnonzero(load < 0.98 * before)[0]  # the first state where the ball has started to unload
+    # 2 % of its load is gone when the entry edge's circle has dropped 1 - 0.98^(2/3) of its approach
+    approach = float(b.hertz(0.0, "outer").deflection(before))
+    lag = math.sqrt(2 * r_b * (1 - 0.98 ** (2 / 3)) * approach) / speed
+    assert t[unloading] == pytest.approx(event["entry_s"] + lag, abs=2 * dt)
+    off = (load == 0.0).astype(int)
+    edges = np.flatnonzero(np.diff(off))  # starts (0 -> 1) and ends (1 -> 0) of contact-free stretches
+    runs = [(b_ - a_, a_, b_) for a_, b_ in zip(edges[::2], edges[1::2])]
+    assert runs and max(runs)[0] > 40  # contact lost for a stretch over a notch deeper than the approach
+    struck = t[max(runs)[2] + 1]
+    earliest = event["exit_s"] - math.sqrt(depth * (2 * r_b - depth)) / speed
+    assert earliest - 2 * dt <= struck <= event["exit_s"]
+
+
+def test_vibration_cli_writes_the_issue_json(tmp_path):
+    """`vibration` from a bearing file with a [[defect]]: the JSON keys, the signal file, both
+    sets of fault frequencies, passages with entry before exit, the reach stated."""
+    from exudyn_bearing.bearingfile import BearingFile, save_bearing
+
+    path = tmp_path / "cwru.toml"
+    save_bearing(BearingFile(CWRU_6205_BEARING, surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))),
+                 path)
+    cmd = [sys.executable, "-m", "exudyn_bearing", "vibration", "--bearing", str(path), "--rpm", "1797",
+           "--radial", "300", "--time", "0.05", "--out", str(tmp_path / "out")]
+    text = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    assert text.returncode == 0, text.stderr
+    data = json.loads((tmp_path / "out" / "vibration.json").read_text())  # what --json prints
+    for kind in ("kinematic", "actual"):
+        assert set(data["fault_frequencies_Hz"][kind]) == {"BPFO", "BPFI", "BSF", "FTF"}
+    assert data["envelope_peaks_Hz"] and len(data["envelope_peaks_Hz"][0]) == 2
+    events = data["defect_events"]
+    assert events and all(e["entry_s"] < e["exit_s"] and e["defect"] == 0 for e in events)
+    signal = np.loadtxt(data["signal"], delimiter=",", skiprows=2)
+    assert signal.shape[1] == 10 and np.allclose(np.diff(signal[:, 0]), 5e-5)
+    assert "surface" in data["inputs"] and "units" in data
+    assert "a ball reaches 1.02 um of its 280 um depth" in text.stdout
+    assert "BPFO" in text.stdout
+
+
+def test_housing_and_sensors_refuse_bad_input():
+    from exudyn_bearing import CreateAngularContactBearing, races
+
+    with pytest.raises(ValueError, match="Housing: frequency"):
+        races.Housing(frequency=-1.0)
+    with pytest.raises(ValueError, match="Housing: mass"):
+        races.Housing(mass=0.0)
+    mbs = exu.SystemContainer().AddSystem()
+    with pytest.raises(ValueError, match="innerRace: Housing"):
+        CreateAngularContactBearing(mbs, innerRace=races.Housing(), show=False)
+    h = CreateAngularContactBearing(mbs, axialForce=1300.0, show=False)
+    with pytest.raises(ValueError, match="AddVibrationSensors: the outer race is a kinematic"):
+        h.AddVibrationSensors(mbs)
