@@ -56,12 +56,15 @@ def shaft_bearings(preload):
 
 
 def build(mbs, rpm=1800.0, tangential=2000.0, preload=5e-6, ramp=0.0, show=False,
-          node_type=exu.NodeType.RotationRotationVector, hold_speed=True, settle=True):
+          node_type=exu.NodeType.RotationRotationVector, hold_speed=True, settle=True, outer_races=None,
+          surfaces=None):
     """Add the shaft, its speed constraint (``hold_speed``), the gear load and both bearings
     to ``mbs``; returns (shaft body, [bearing handles], (force, moment)). ``node_type``: the
     shaft's Exudyn node type (Exudyn's default is Euler parameters; the races then sit on
     light adapter bodies joined to the shaft). ``settle``: place the shaft at its
-    quasi-static equilibrium under the load at t = 0 before adding the bearings."""
+    quasi-static equilibrium under the load at t = 0 before adding the bearings.
+    ``outer_races``, ``surfaces``: per bearing, its outer race (default ``races.Fixed()``) and
+    race surfaces (default perfect; demos/defect_vibration.py puts a spall on one)."""
     omega = rpm * np.pi / 30
     shaft = mbs.CreateRigidBody(inertia=InertiaCylinder(density=7850.0, length=0.3, outerRadius=0.045, axis=2),
                                 referencePosition=[0.0, 0.0, 0.0], initialAngularVelocity=[0.0, 0.0, omega],
@@ -83,11 +86,13 @@ def build(mbs, rpm=1800.0, tangential=2000.0, preload=5e-6, ramp=0.0, show=False
         at_start = 0.0 if ramp > 0 else 1.0
         SettleShaft(mbs, body, shaft_bearings(preload), at_start * force, at_start * moment[:2], rpm=rpm)
     handles = []
-    for b in shaft_bearings(preload):
+    for k, b in enumerate(shaft_bearings(preload)):
         rot = np.asarray(b.rotation)
+        extra = {} if surfaces is None or surfaces[k] is None else {"surface": surfaces[k]}
         handles.append(CreateAngularContactBearing(
             mbs, b.bearing, innerRace=races.OnBody(body, localPosition=b.inner_position, localRotation=rot),
-            outerRace=races.Fixed(), position=b.position, rotationMatrix=rot, show=show))
+            outerRace=races.Fixed() if outer_races is None or outer_races[k] is None else outer_races[k],
+            position=b.position, rotationMatrix=rot, show=show, **extra))
     return body, handles, (force, moment)
 
 

@@ -175,6 +175,21 @@ def test_outer_race_defect_repeats_at_the_actual_cage_speed_below_pure_rolling()
     assert abs(passages - actual * (r.time[-1] - r.time[0])) <= 1.0
 
 
+def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
+    """A 1-mm, 20-um inner-race spall on the 6205 at 300 N radial, 1797 rpm: the spall turns
+    with the shaft through the load zone once per revolution, so the envelope spectrum has
+    the run's BPFI and the sidebands BPFI +- f_shaft among its strongest lines."""
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.3, sample_rate=10000.0,
+                  surface=SurfaceModel((Defect("inner", 0.0, 1e-3, 20e-6),)))
+    bpfi, shaft = r.fault_frequencies["actual"]["BPFI"], 1797 / 60
+    lines = [f for f, _ in r.envelope_peaks[:8]]
+    for want in (bpfi, bpfi - shaft, bpfi + shaft):
+        assert min(abs(f - want) for f in lines) < 1.0, (want, lines)
+    assert abs(bpfi - r.fault_frequencies["kinematic"]["BPFI"]) < 0.01 * bpfi
+
+
 def test_notch_passage_follows_its_geometry():
     """A 1.5-mm notch, 20 um deep, on the outer race of the 6205 at 300 N radial, 5-us steps.
     The passage of the ball under the load (``defect_events``) lasts L / ((d_m/2 + r) w_c);

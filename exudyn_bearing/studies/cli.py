@@ -139,7 +139,7 @@ def _vibration(args) -> int:
     result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                        sample_rate=args.sample_rate, settle=args.settle, band=tuple(args.band) if args.band else None,
                        housing=Housing(frequency=args.housing_frequency, mass=args.housing_mass,
-                                       dampingRatio=args.housing_damping))
+                                       dampingRatio=args.housing_damping), error_estimate=args.error_estimate)
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
@@ -172,7 +172,14 @@ def _vibration(args) -> int:
               f"{faults['actual'][name]:11.3f} {faults['actual'][name] / (args.rpm / 60):15.4f}")
     peaks = ", ".join(f"{f:.2f} Hz ({a:.3g})" for f, a in result.envelope_peaks[:5])
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
-    print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s")
+    sv = result.solver
+    print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
+          f"(step {sv['step_s']:g} s, {sv['steps']} steps, {sv['step_cuts']} more than planned)")
+    est = result.error_estimate
+    if est:
+        print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time): strongest "
+              f"envelope line {est['envelope_line_Hz']:.3g} Hz, its amplitude {est['envelope_amplitude_percent']:.2g} %, "
+              f"kinematic cage slip {est['kinematic_cage_slip_pp']:.2g} pp")
     if args.plot:
         print(f"  plot written to {args.plot}")
     return 0
@@ -437,6 +444,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--housing-mass", type=float, default=2.0, help="housing mass (ring included), kg")
     p.add_argument("--housing-damping", type=float, default=0.05, help="housing damping ratio")
     p.add_argument("--out", default="out/vibration", help="output directory (signal.csv, vibration.json)")
+    p.add_argument("--error-estimate", action="store_true",
+                   help="repeat at half the step and report the changes of the strongest envelope line")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies")
     p.set_defaults(func=_vibration)

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..bearing import Bearing
+from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
            "envelope_spectrum", "spectral_peaks", "defect_events", "VibrationResult", "vibration"]
@@ -174,15 +175,20 @@ class VibrationResult:
     wall_time_s: float
     inputs: dict
     results: object = field(repr=False, default=None)  #: the bearing's BearingResults
+    #: step s, steps taken, step cuts (steps beyond time / step), Newton iterations
+    solver: dict = field(default_factory=dict)
+    error_estimate: dict | None = None  #: see :func:`vibration`
 
     def to_dict(self) -> dict:
         return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
                 "spectrum_peaks_Hz": self.spectrum_peaks, "defect_events": self.defect_events,
                 "sample_rate_Hz": self.sample_rate, "envelope_band_Hz": list(self.band),
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
+                "solver": self.solver, "error_estimate": self.error_estimate,
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
+                          "solver": "step_s s; counts", "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
@@ -190,17 +196,20 @@ class VibrationResult:
 
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
               sample_rate: float = 20000.0, housing=None, band: tuple | None = None, settle: float = 0.02,
-              surface=None, settings=None) -> VibrationResult:
+              surface=FILE_SURFACE, settings=None, error_estimate: bool = False, lubricant=FILE_LUBRICANT,
+              contact_law=FILE_LAW, cage=FILE_CAGE, ball_drag=FILE_DRAG) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
     analyse the housing acceleration sampled at ``sample_rate`` Hz (the time step is at most
     its period; MODEL.md §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance), fault frequencies, defect passages. The first ``settle`` s are
     left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
-    the file's."""
+    the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
+    ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
+    differences of the strongest envelope line (frequency, amplitude) and of the slip."""
     import exudyn as exu
 
-    from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE, file_inputs
+    from ..bearingfile import file_inputs
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Housing
     from ..simulation.runner import SolverSettings, run_solver
@@ -211,8 +220,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
     housing = housing or Housing()
     bearing, (lubricant, law, cage, drag, surface) = file_inputs(
-        bearing, lubricant=FILE_LUBRICANT, contactLaw=FILE_LAW, cage=FILE_CAGE, ballDrag=FILE_DRAG,
-        surface=FILE_SURFACE if surface is None else surface)
+        bearing, lubricant=lubricant, contactLaw=contact_law, cage=cage, ballDrag=ball_drag, surface=surface)
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
     handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=housing,
@@ -226,7 +234,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
     settings = replace(settings, step=step, output_step=period)
     wall = _time.perf_counter()
-    run_solver(mbs, [handle], time, settings)
+    info = run_solver(mbs, [handle], time, settings)
     wall = _time.perf_counter() - wall
     frame = handle.connector.rotation
     data = {k: np.asarray(mbs.GetSensorStoredData(s)) for k, s in sensors.items()}
@@ -236,7 +244,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     t = np.arange(int(math.floor(raw[-1] * sample_rate + 1e-6)) + 1) / sample_rate
     acc, vel, disp = (np.column_stack([np.interp(t, data[k][:, 0], data[k][:, 1 + i]) for i in range(3)]) @ frame
                       for k in ("Acceleration", "Velocity", "Displacement"))
-    results = handle.Results(mbs)
+    # the bearing's outputs at <= 2 kHz: means and smooth ball angles (1 s of 20 kHz states
+    # costs ~90 s through the connector, 10x the run's own post-processing otherwise)
+    results = handle.Results(mbs, stride=max(1, int(sample_rate // 2000)))
     keep = t >= settle
     kept = results.time >= settle
     sub = replace(results, **{k: v[kept] for k, v in vars(results).items()
@@ -251,13 +261,27 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
-    events = defect_events(results, bearing, surface) if surface is not None and surface.defects else []
+    events = defect_events(results, bearing, surface) if surface.defects else []
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
-    return VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
-                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
-                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
-                           float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results)
+    out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
+                          spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
+                          spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
+                          float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results,
+                          {"step_s": step, "steps": int(info.steps), "step_cuts": int(info.steps) - int(round(time / step)),
+                           "newton_iterations": int(info.newton_iterations)})
+    if error_estimate:
+        finer = vibration(bearing, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
+                          sample_rate=sample_rate, housing=housing, band=band, settle=settle, surface=surface,
+                          settings=replace(settings, step=0.5 * step), lubricant=lubricant, contact_law=law,
+                          cage=cage, ball_drag=drag)
+        (f0, a0), (f1, a1) = out.envelope_peaks[0], finer.envelope_peaks[0]
+        out.error_estimate = {"method": "rerun at half the step", "reference_step_s": 0.5 * step,
+                              "reference_wall_time_s": finer.wall_time_s,
+                              "envelope_line_Hz": abs(f1 - f0), "envelope_amplitude_percent": 100 * abs(a1 - a0) / a1,
+                              "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent
+                                                            - out.kinematic_cage_slip_percent)}
+    return out
 
 
 def write_signal(result: VibrationResult, path) -> None:

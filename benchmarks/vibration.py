@@ -1,0 +1,55 @@
+"""Cost and step convergence of the vibration run (MODEL.md §13c; issue 33).
+
+    python benchmarks/vibration.py [--quick]
+
+Prints, in one session (ratios are what to compare; the host is shared):
+1. the defective CWRU 6205 (0.18-mm, 0.28-mm-deep outer-race notch) at 1797 rpm, 300 N radial,
+   housing at 3 kHz, 20 kHz output: wall time for 1 s simulated;
+2. the same at steps of 1/2, 1/4 of the sample period over 0.3 s: the strongest envelope
+   line (frequency, amplitude) and its change per halving (the half-step error estimate);
+3. the reference bearing at 1300 N, 1800 rpm, 0.1 s on its housing: clean vs outer-race
+   waviness (orders 15, 16, 17 at 0.1 um), wall-time ratio.
+"""
+from __future__ import annotations
+
+import sys
+import time
+
+from contact.surface import Defect, SurfaceModel, Waviness
+from exudyn_bearing import CWRU_6205_BEARING, REFERENCE_BEARING
+from exudyn_bearing.simulation.runner import SolverSettings
+from exudyn_bearing.studies.vibration import vibration
+
+NOTCH = SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))
+
+
+def main(quick: bool) -> None:
+    length = 0.2 if quick else 1.0
+    t0 = time.perf_counter()
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=length, surface=NOTCH)
+    print(f"1. CWRU 6205 notch, {length:g} s at 20 kHz: run {r.wall_time_s:.1f} s, whole call "
+          f"{time.perf_counter() - t0:.1f} s; envelope line {r.envelope_peaks[0][0]:.2f} Hz "
+          f"({r.envelope_peaks[0][1]:.4g} m/s^2), actual BPFO {r.fault_frequencies['actual']['BPFO']:.3f} Hz, "
+          f"{len(r.defect_events)} passages; step {r.solver['step_s']:g} s, {r.solver['steps']} steps "
+          f"({r.solver['step_cuts']} beyond the plan)", flush=True)
+    base = None
+    for div in (1, 2, 4):
+        step = 5e-5 / div
+        r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.3, surface=NOTCH,
+                      settings=SolverSettings(step=step))
+        f, a = r.envelope_peaks[0]
+        change = "" if base is None else f"; change {100 * (a - base) / base:+.2f} % of the amplitude"
+        print(f"2. step {step * 1e6:.1f} us: envelope line {f:.3f} Hz, {a:.5g} m/s^2, run {r.wall_time_s:.1f} s, "
+              f"{r.solver['step_cuts']} steps beyond the plan{change}", flush=True)
+        base = a
+    walls = {}
+    for name, surface in (("clean", None), ("waviness", SurfaceModel(waviness=Waviness(
+            outer=((15, 0.1e-6, 0.0), (16, 0.1e-6, 0.0), (17, 0.1e-6, 0.0)))))):
+        r = vibration(REFERENCE_BEARING, rpm=1800, axial_force=1300.0, time=0.1, surface=surface or SurfaceModel())  # (perfect: bit for bit)
+        walls[name] = r.wall_time_s
+        print(f"3. reference bearing {name}: run {r.wall_time_s:.2f} s", flush=True)
+    print(f"3. waviness / clean wall time: {walls['waviness'] / walls['clean']:.2f}")
+
+
+if __name__ == "__main__":
+    main("--quick" in sys.argv)
