@@ -68,8 +68,8 @@ def scene(run_time):
     settings.timeIntegration.generalizedAlpha.spectralRadius = 0.5
     settings.timeIntegration.newton.relativeTolerance = 1e-4
     settings.timeIntegration.newton.absoluteTolerance = handles[0].RecommendedAbsoluteTolerance()
-    settings.solutionSettings.sensorsWritePeriod = 1.0 / fs
-    settings.solutionSettings.writeSolutionToFile = False
+    settings.solution.sensors.writePeriod = 1.0 / fs
+    settings.solution.file.write = False
     settings.timeIntegration.verboseMode = 0
     start = time.perf_counter()
     mbs.SolveDynamic(settings)

@@ -15,11 +15,14 @@ __all__ = ["BearingHandle", "SENSOR_OUTPUTS", "SENSOR_LABELS"]
 
 
 #: Outputs :meth:`BearingHandle.AddSensors` can record.
-SENSOR_OUTPUTS = ("cageSpeed", "cageSlip", "kinematicCageSlip", "attitudeXZ", "attitudeYZ")
+SENSOR_OUTPUTS = ("cageSpeed", "cageSlip", "kinematicCageSlip", "attitudeXZ", "attitudeYZ", "innerRaceForce",
+                  "outerRaceForce")
 #: what each output is and its unit (MODEL.md §7), for plot axes and legends
 SENSOR_LABELS = {"cageSpeed": ("cage speed", "rad/s"), "cageSlip": ("cage slip, the paper's P19", "%"),
                  "kinematicCageSlip": ("kinematic cage slip", "%"), "attitudeXZ": ("ball attitude xz", "deg"),
-                 "attitudeYZ": ("ball attitude yz", "deg")}
+                 "attitudeYZ": ("ball attitude yz", "deg"),
+                 "innerRaceForce": ("force of the balls on the inner race (x, y, z of the bearing frame)", "N"),
+                 "outerRaceForce": ("force of the balls on the outer race (x, y, z of the bearing frame)", "N")}
 
 
 @dataclass
@@ -92,7 +95,9 @@ class BearingHandle:
         ``mbs.PlotSensor``, live views and sensor files; nothing is evaluated unless a
         scene asks for them. Outputs (MODEL.md §7): 'cageSpeed' (rad/s), 'cageSlip' (P19,
         %), 'kinematicCageSlip' (%, mean over balls), 'attitudeXZ' and 'attitudeYZ' (ball
-        attitude angles, deg, mean over balls). All requested outputs share one evaluation
+        attitude angles, deg, mean over balls), 'innerRaceForce' and 'outerRaceForce' (the
+        balls' contact forces on each race, N, x y z of the bearing frame: what the housing
+        takes). All requested outputs share one evaluation
         of the connector per written time. Returns {output: sensor number}; call before
         ``mbs.Assemble()``. The write period is ``simulationSettings.solution.sensors.writePeriod``."""
         from exudyn.utilities import SensorUserFunction
@@ -116,13 +121,14 @@ class BearingHandle:
                 cache[key] = {"cageSpeed": res.cage_speed[0], "cageSlip": res.cage_slip_percent[0],
                               "kinematicCageSlip": res.kinematic_cage_slip_percent[0],
                               "attitudeXZ": float(np.degrees(np.mean(res.attitude_xz[0]))),
-                              "attitudeYZ": float(np.degrees(np.mean(res.attitude_yz[0])))}
+                              "attitudeYZ": float(np.degrees(np.mean(res.attitude_yz[0]))),
+                              "innerRaceForce": res.inner_race_force[0], "outerRaceForce": res.outer_race_force[0]}
             return cache[key]
 
         sensors = {}
         for name in outputs:
             def user_function(mbs_, t, sensorNumbers, factors, configuration, name=name):
-                return [float(evaluate(mbs_, t, configuration)[name])]
+                return [float(v) for v in np.atleast_1d(evaluate(mbs_, t, configuration)[name])]
 
             kw = {"fileName": fileNames[name]} if fileNames and name in fileNames else {}
             sensors[name] = mbs.AddSensor(SensorUserFunction(sensorUserFunction=user_function, storeInternal=storeInternal,
@@ -134,7 +140,7 @@ class BearingHandle:
         """Exudyn body sensors of the outer race's body (a ``races.Housing`` or your housing
         through ``races.OnBody``) at the bearing centre, global frame: 'Acceleration' (m/s²),
         'Velocity' (m/s), 'Displacement' (m, from the start). Sampled at the sensors' write
-        period (``simulationSettings.solutionSettings.sensorsWritePeriod``: 5e-5 s for 20 kHz).
+        period (``simulationSettings.solution.sensors.writePeriod``: 5e-5 s for 20 kHz).
         Returns {output: sensor number}; call before ``mbs.Assemble()``."""
         import exudyn as exu
         from exudyn.utilities import SensorBody

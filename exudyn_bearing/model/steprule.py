@@ -109,3 +109,26 @@ def recommended_step(bearing, loads, nominal: float = NOMINAL_STEP) -> float:
     n = max(1, math.ceil(w_n * nominal / MAX_VIBRATION_PHASE - 1e-9))
     n = max(n, math.ceil(nominal / orbit_step_limit(bearing, loads) - 1e-9))
     return nominal / n
+
+
+#: steps per defect passage of the vibration run (MODEL.md §13c)
+STEPS_PER_PASSAGE = 2
+
+
+def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
+                 steps_per_passage: int = STEPS_PER_PASSAGE) -> float:
+    """The longest step that puts ``steps_per_passage`` steps into the shortest defect passage of
+    ``surface`` (MODEL.md §13c): a defect of length L on a race passes under a contact moving at
+    |ω_c − ω_race| ρ over it (ρ = d_m/2 ∓ r cos α, the pure-rolling cage speed ω_c), so
+    h = L / (steps_per_passage |ω_c − ω_race| ρ); inf without defects."""
+    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    w_c = bearing.cage_speed(w_i, w_o)
+    step = math.inf
+    for d in surface.defects:
+        inner = d.race == "inner"
+        rho = 0.5 * bearing.pitch_diameter + (-1.0 if inner else 1.0) * bearing.ball_radius * math.cos(
+            bearing.contact_angle)
+        speed = abs(w_c - (w_i if inner else w_o)) * rho
+        if speed > 0.0:
+            step = min(step, d.length / (steps_per_passage * speed))
+    return step

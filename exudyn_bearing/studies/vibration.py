@@ -201,7 +201,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
     analyse the housing acceleration sampled at ``sample_rate`` Hz (the time step is at most
-    its period; MODEL.md §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
+    its period and puts two steps into each defect passage, a whole number per sample;
+    MODEL.md §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance), fault frequencies, defect passages. The first ``settle`` s are
     left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
     the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
@@ -212,6 +213,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     from ..bearingfile import file_inputs
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Housing
+    from ..model.steprule import passage_step
     from ..simulation.runner import SolverSettings, run_solver
 
     if not (math.isfinite(sample_rate) and sample_rate > 0):
@@ -230,7 +232,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     mbs.Assemble()
     period = 1.0 / sample_rate
     settings = settings or SolverSettings()
-    step = min(settings.step or handle.RecommendedStep(), period)
+    step = min(settings.step or min(handle.RecommendedStep(), passage_step(bearing, surface, rpm)), period)
     step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
     settings = replace(settings, step=step, output_step=period)
     wall = _time.perf_counter()
