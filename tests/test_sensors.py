@@ -40,12 +40,15 @@ def test_sensors_follow_the_run_and_cost_nothing_unless_added():
                          ("attitudeXZ", np.degrees(res.attitude_xz.mean(axis=1)))):
         at = np.searchsorted(res.time, data[name][-1, 0] - 1e-12)
         assert data[name][-1, 1] == pytest.approx(series[at], rel=1e-9), name
-    # the balls' forces on the races carry the applied load (quasi-static balance; the 5-ms
-    # run's race inertia and damping: within 1 %), inner and outer equal and opposite up to
-    # the balls' own inertia
+    # the balls' forces on the races: the recorded outputs at the same time, and the load path
+    # (they carry the applied load, up to the races' and balls' inertia and the cage's land
+    # force in this 5-ms run: within 3 %)
+    at = np.searchsorted(res.time, data["outerRaceForce"][-1, 0] - 1e-12)
+    np.testing.assert_allclose(data["outerRaceForce"][-1, 1:], res.outer_race_force[at], rtol=1e-9)
+    np.testing.assert_allclose(data["innerRaceForce"][-1, 1:], res.inner_race_force[at], rtol=1e-9)
     applied = np.array([2000.0, 0.0, 2200.0])
-    np.testing.assert_allclose(data["outerRaceForce"][-1, 1:], applied, rtol=0, atol=0.01 * 2200.0)
-    np.testing.assert_allclose(data["innerRaceForce"][-1, 1:], -applied, rtol=0, atol=0.01 * 2200.0)
+    np.testing.assert_allclose(data["outerRaceForce"][-1, 1:], applied, rtol=0, atol=0.03 * 2200.0)
+    np.testing.assert_allclose(data["innerRaceForce"][-1, 1:], -applied, rtol=0, atol=0.03 * 2200.0)
     with pytest.raises(ValueError, match="outputs"):
         handle.AddSensors(mbs, outputs=("cageVelocity",))
 
