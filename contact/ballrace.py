@@ -298,9 +298,11 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)
 
 
-def with_surface(kin: ContactKinematics, terms, race, ball, ball_radius) -> ContactKinematics:
+def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch_diameter) -> ContactKinematics:
     """``kin`` with the race surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md
     §13): approach δ + h and its rate + (dh/dθ) θ̇; ``race`` (0 inner, 1 outer) and ``ball``
-    index of each contact, ``ball_radius`` m."""
-    h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, ball_radius)
+    index of each contact; D and d_m in m (the contacts' reduced radii R_x, §2)."""
+    race = np.asarray(race)
+    r_x = geometry.rolling_radius(ball_diameter, pitch_diameter, kin.contact_angle, 2.0 * race - 1.0)
+    h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)
     return replace(kin, penetration=kin.penetration + h, penetration_rate=kin.penetration_rate + slope * kin.orbit_rate)

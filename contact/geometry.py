@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = [
-    "race_sign", "curvature_radii", "free_contact_angle", "diametral_clearance",
+    "race_sign", "curvature_radii", "rolling_radius", "free_contact_angle", "diametral_clearance",
     "groove_centres", "GrooveContact", "groove_contact",
 ]
 
@@ -29,6 +29,12 @@ def race_sign(race):
     if not np.all(np.abs(sign) == 1.0):
         raise ValueError("race must be 'inner', 'outer' or an array of -1 (inner) / +1 (outer)")
     return sign
+
+
+def rolling_radius(ball_diameter, pitch_diameter, contact_angle, race):
+    """The reduced radius along the rolling direction R_x of :func:`curvature_radii`, m."""
+    cos_a = np.cos(np.asarray(contact_angle, dtype=float))
+    return ball_diameter * (pitch_diameter + race_sign(race) * ball_diameter * cos_a) / (2.0 * pitch_diameter)
 
 
 def curvature_radii(ball_diameter, pitch_diameter, contact_angle, conformity, race):
@@ -48,9 +54,7 @@ def curvature_radii(ball_diameter, pitch_diameter, contact_angle, conformity, ra
     race : {'inner', 'outer'} or array_like of -1/+1
         See :func:`race_sign`.
     """
-    cos_a = np.cos(np.asarray(contact_angle, dtype=float))
-    sign = race_sign(race)
-    r_x = ball_diameter * (pitch_diameter + sign * ball_diameter * cos_a) / (2.0 * pitch_diameter)
+    r_x = rolling_radius(ball_diameter, pitch_diameter, contact_angle, race)
     conformity = np.asarray(conformity, dtype=float)
     r_y = conformity * ball_diameter / (2.0 * conformity - 1.0) * np.ones_like(r_x)
     return r_x, r_y

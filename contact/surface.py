@@ -12,16 +12,18 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
 * **Ball-diameter variation**: ball j's radius is larger by ΔD_j / 2 at both its contacts.
 * **Local defect** of length L (along the rolling direction), depth d, width w (across), at
   azimuth θ_d: the ball has finite size, so over the defect its centre follows the geometric
-  path of a sphere of radius r resting on the edges (Sawalhi & Randall 2011, MSSP 25, 846;
-  Moazen-Ahmadi & Howard 2016, MSSP 75, 78):
+  path of a ball resting on the edges (Sawalhi & Randall 2011, MSSP 25, 846). Ball and race
+  are both curved along the rolling direction, so the ball sinks into a gap between the
+  edges as a sphere of the contact's reduced radius R_x = (1/r ± 1/R_race)⁻¹ sinks into a gap
+  in a flat surface (to second order in the gap; a flat race gives R_x = r):
 
-      drop(x) = min(p(x), s(x), s(L − x)),   s(u) = r − √(r² − u²),  h = −drop   (13.2)
+      drop(x) = min(p(x), s(x), s(L − x)),   s(u) = R_x − √(R_x² − u²),  h = −drop   (13.2)
 
   x the contact's arc position from the entry edge, p(x) the depth profile (d; with an edge
   ramp of length e: d min(1, x/e, (L − x)/e)). The ball unloads gradually past the entry
-  edge and is re-stressed at the exit edge; over a notch shorter than 2√(2 r d) it never
-  reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal stays
-  the groove's (the edge's own normal is not modelled).
+  edge and is re-stressed at the exit edge; over a notch shorter than 2√(d (2 R_x − d)) it
+  never reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal
+  stays the groove's (the edge's own normal is not modelled).
 """
 from __future__ import annotations
 
@@ -48,8 +50,8 @@ def _number(key: str, value, *, positive: bool = True, allow_zero: bool = False)
 
 
 def sag(u: float, radius: float) -> float:
-    """Drop of a sphere of ``radius`` (m) resting on an edge at horizontal distance ``u`` (m):
-    r − √(r² − u²) (eq. 13.2), r for u ≥ r."""
+    """Drop of a sphere of ``radius`` (m; the contact's reduced radius R_x) resting on an edge at
+    horizontal distance ``u`` (m): R − √(R² − u²) (eq. 13.2), R for u ≥ R."""
     return radius if u >= radius else radius - math.sqrt(radius * radius - u * u)
 
 
@@ -100,9 +102,11 @@ class Defect:
         if 2.0 * self.edge > self.length:
             raise ValueError(f"defect.edge: two edge ramps of {self.edge} m do not fit the length {self.length} m")
 
-    def reach(self, ball_radius: float) -> float:
-        """Deepest point a ball of ``ball_radius`` (m) reaches in this defect, m: min(d, s(L/2))."""
-        return min(self.depth, sag(0.5 * self.length, ball_radius))
+    def reach(self, radius: float) -> float:
+        """Deepest point a ball reaches in this defect, m: min(d, s(L/2)) (eq. 13.2) with
+        ``radius`` the contact's reduced radius R_x along the rolling direction, m
+        (:func:`contact.geometry.curvature_radii`)."""
+        return min(self.depth, sag(0.5 * self.length, radius))
 
 
 def _waviness_rows(key: str, rows) -> tuple:
@@ -224,11 +228,12 @@ def surface_record(surface: SurfaceModel | None, bearing) -> SurfaceRecord:
 
 
 @njit(cache=True, error_model="numpy")
-def race_height(surface, race, theta, contact_angle, point_radius, ball, ball_radius):
+def race_height(surface, race, theta, contact_angle, point_radius, ball, rolling_radius):
     """(h, dh/dθ) of ``race`` (0 inner, 1 outer) at the contact of ``ball`` (MODEL.md §13):
     h the surface height toward the ball, m (eq. 13.1, 13.2, the ball's radius excess);
     θ the contact's azimuth in the race frame (rad), ``contact_angle`` rad,
-    ``point_radius`` the contact point's distance from the race axis (m)."""
+    ``point_radius`` the contact point's distance from the race axis (m),
+    ``rolling_radius`` the contact's reduced radius R_x along the rolling direction (m)."""
     h = 0.0
     dh = 0.0
     waves = surface.waviness
@@ -260,11 +265,11 @@ def race_height(surface, race, theta, contact_angle, point_radius, ball, ball_ra
                 drop = depth * ramp / edge
                 slope = depth / edge if x < length - x else -depth / edge
         u = min(x, length - x)  # the nearer edge carries the ball (eq. 13.2)
-        if u < ball_radius:
-            s = ball_radius - math.sqrt(ball_radius * ball_radius - u * u)
+        if u < rolling_radius:
+            s = rolling_radius - math.sqrt(rolling_radius * rolling_radius - u * u)
             if s < drop:
                 drop = s
-                slope = u / (ball_radius - s)
+                slope = u / (rolling_radius - s)
                 if x > length - x:
                     slope = -slope
         h -= drop
@@ -273,14 +278,15 @@ def race_height(surface, race, theta, contact_angle, point_radius, ball, ball_ra
 
 
 @njit(cache=True, error_model="numpy")
-def _race_heights(surface, race, theta, contact_angle, point_radius, ball, ball_radius, out):
+def _race_heights(surface, race, theta, contact_angle, point_radius, ball, rolling_radius, out):
     for i in range(theta.shape[0]):
         out[0, i], out[1, i] = race_height(surface, race[i], theta[i], contact_angle[i], point_radius[i], ball[i],
-                                           ball_radius)
+                                           rolling_radius[i])
 
 
-def race_heights(surface: SurfaceRecord, race, theta, contact_angle, point_radius, ball, ball_radius) -> np.ndarray:
-    """:func:`race_height` for n contacts (arrays (n,); the numpy path): rows (h m, dh/dθ m/rad), (2, n)."""
+def race_heights(surface: SurfaceRecord, race, theta, contact_angle, point_radius, ball, rolling_radius) -> np.ndarray:
+    """:func:`race_height` for n contacts (arrays (n,) or scalars; the numpy path): rows (h m,
+    dh/dθ m/rad), (2, n)."""
     theta = np.ascontiguousarray(theta, dtype=float)
     n = theta.shape[0]
 
@@ -289,5 +295,5 @@ def race_heights(surface: SurfaceRecord, race, theta, contact_angle, point_radiu
 
     out = np.empty((2, n))
     _race_heights(surface, arr(race, np.int64), theta, arr(contact_angle), arr(point_radius), arr(ball, np.int64),
-                  float(ball_radius), out)
+                  arr(rolling_radius), out)
     return out

@@ -97,14 +97,14 @@ def terms_from_plain(plain):
 
 
 @njit(cache=True, error_model="numpy")
-def surface_height(terms, race, theta, contact_angle, point_radius, ball, ball_radius):
+def surface_height(terms, race, theta, contact_angle, point_radius, ball, rolling_radius):
     """Stage 0: (h, dh/dθ) of the race surface at the contact of ``ball`` with ``race`` (0 inner,
-    1 outer) at race-frame azimuth ``theta`` (rad), by :func:`contact.surface.race_height`;
-    (0, 0) for perfect surfaces (one comparison)."""
+    1 outer) at race-frame azimuth ``theta`` (rad), reduced radius ``rolling_radius`` R_x (m),
+    by :func:`contact.surface.race_height`; (0, 0) for perfect surfaces (one comparison)."""
     s = terms.surface
     if s.waviness.shape[0] + s.defects.shape[0] + s.ball_excess.shape[0] == 0:
         return 0.0, 0.0
-    return race_height(s, race, theta, contact_angle, point_radius, ball, ball_radius)
+    return race_height(s, race, theta, contact_angle, point_radius, ball, rolling_radius)
 
 
 @njit(cache=True, error_model="numpy")
@@ -141,11 +141,11 @@ def _contact_terms(terms, state, out):
         out[1, i], out[2, i] = contact_loads(terms, cs, phi)
 
 
-def surface_terms(terms: TermRecord, race, theta, contact_angle, point_radius, ball, ball_radius) -> np.ndarray:
+def surface_terms(terms: TermRecord, race, theta, contact_angle, point_radius, ball, rolling_radius) -> np.ndarray:
     """Stage 0 for n contacts (the numpy path; arrays (n,)): rows (h m, dh/dθ m/rad), (2, n)."""
     from .surface import race_heights
 
-    return race_heights(terms.surface, race, theta, contact_angle, point_radius, ball, ball_radius)
+    return race_heights(terms.surface, race, theta, contact_angle, point_radius, ball, rolling_radius)
 
 
 def contact_terms(terms: TermRecord, **state) -> np.ndarray:

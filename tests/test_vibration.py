@@ -195,8 +195,8 @@ def test_notch_passage_follows_its_geometry():
     The passage of the ball under the load (``defect_events``) lasts L / ((d_m/2 + r) w_c);
     in its contact-load trace the ball starts to unload when its contact reaches the entry
     edge (2 % of its load gone where the edge's circle has dropped 1.3 % of its approach), and after it has lost contact it is struck again on the exit side no earlier than
-    where the exit edge's circle reaches the notch's depth, √(d (2 r − d)) before the edge
-    (eq. 13.2), and no later than the edge."""
+    where the exit edge's circle reaches the notch's depth, √(d (2 R_x − d)) before the edge
+    (eq. 13.2, R_x = r (d_m + D)/d_m), and no later than the edge."""
     from exudyn_bearing import CreateAngularContactBearing, races
     from exudyn_bearing.simulation.runner import SolverSettings, run_solver
     from exudyn_bearing.studies.vibration import defect_events
@@ -222,14 +222,15 @@ def test_notch_passage_follows_its_geometry():
     unloading = np.flatnonzero(load < 0.98 * before)[0]  # the first state where the ball has started to unload
     # 2 % of its load is gone when the entry edge's circle has dropped 1 - 0.98^(2/3) of its approach
     approach = float(b.hertz(0.0, "outer").deflection(before))
-    lag = math.sqrt(2 * r_b * (1 - 0.98 ** (2 / 3)) * approach) / speed
+    r_x = r_b * (b.pitch_diameter + b.ball_diameter) / b.pitch_diameter
+    lag = math.sqrt(2 * r_x * (1 - 0.98 ** (2 / 3)) * approach) / speed
     assert t[unloading] == pytest.approx(event["entry_s"] + lag, abs=2 * dt)
     off = (load == 0.0).astype(int)
     edges = np.flatnonzero(np.diff(off))  # starts (0 -> 1) and ends (1 -> 0) of contact-free stretches
     runs = [(b_ - a_, a_, b_) for a_, b_ in zip(edges[::2], edges[1::2])]
     assert runs and max(runs)[0] > 40  # contact lost for a stretch over a notch deeper than the approach
     struck = t[max(runs)[2] + 1]
-    earliest = event["exit_s"] - math.sqrt(depth * (2 * r_b - depth)) / speed
+    earliest = event["exit_s"] - math.sqrt(depth * (2 * r_x - depth)) / speed
     assert earliest - 2 * dt <= struck <= event["exit_s"]
 
 
@@ -254,7 +255,8 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     signal = np.loadtxt(data["signal"], delimiter=",", skiprows=2)
     assert signal.shape[1] == 10 and np.allclose(np.diff(signal[:, 0]), 5e-5)
     assert "surface" in data["inputs"] and "units" in data
-    assert "a ball reaches 1.02 um of its 280 um depth" in text.stdout
+    # R_x = r (d_m + D) / d_m = 4.777 mm at the outer race: s(0.09 mm) = 0.848 um
+    assert "a ball reaches 0.85 um of its 280 um depth" in text.stdout
     assert "BPFO" in text.stdout
 
 

@@ -89,8 +89,9 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     angle = math.atan2(sgn * nlz, sgn * (nlx * ex + nly * ey))
     pen = dist - tube
     rho_p = math.hypot(lx + ball_radius * nlx, ly + ball_radius * nly)
+    r_x = diam * (pitch_diameter + sgn * diam * math.cos(angle)) / (2.0 * pitch_diameter)
     # stage 0 (contact.terms): the race surface's height at the contact, in the race's own frame
-    height, height_slope = surface_height(terms, k, math.atan2(ly, lx), angle, rho_p, j, ball_radius)
+    height, height_slope = surface_height(terms, k, math.atan2(ly, lx), angle, rho_p, j, r_x)
     if height != 0.0 or height_slope != 0.0:  # (a separate branch: a perfect surface stays bit for bit)
         pen += height
     penetration[ib, k, j] = pen
@@ -130,7 +131,6 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
     # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
-    r_x = diam * (pitch_diameter + sgn * diam * math.cos(angle)) / (2.0 * pitch_diameter)
     r_y = f_conf * diam / (2.0 * f_conf - 1.0)
     ratio = max(r_y / r_x, 1.0)
     ell = 1.0339 * ratio ** 0.6360

@@ -420,7 +420,7 @@ class BearingConnector:
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
         if self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
-                                   self.bearing.ball_radius)
+                                   self.bearing.ball_diameter, self.bearing.pitch_diameter)
         frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)

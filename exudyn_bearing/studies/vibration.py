@@ -118,7 +118,8 @@ def defect_events(results, bearing: Bearing, surface) -> list:
     "entry_s": the contact reaches the entry edge, where the ball starts to unload,
     "exit_s": it reaches the exit edge}], in time order. The ball is struck on the exit side
     and re-stressed at or before ``exit_s``: where the exit edge's circle (eq. 13.2) comes back
-    up to the depth the ball had sunk to, at most √(d (2 r − d)) before the edge.
+    up to the depth the ball had sunk to, at most √(d (2 R_x − d)) before the edge (R_x the
+    contact's reduced radius along the rolling direction).
 
     The contact's azimuth in the race frame is the ball's azimuth minus the race's turned angle
     (the time integral of its recorded speed); edge crossings are interpolated between
