@@ -260,6 +260,35 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     assert "BPFO" in text.stdout
 
 
+def test_vibration_sensors_on_your_own_housing_body():
+    """The outer race on the user's housing (``races.OnBody``: a rigid body on an Exudyn
+    spring-damper): the body sensors sit at the bearing centre, and over 10 ms the housing's
+    mean displacement is the applied load over the spring stiffness (the static deflection,
+    an independent number), within 5 %."""
+    from exudyn.utilities import InertiaCylinder
+
+    from exudyn_bearing import CreateAngularContactBearing, races
+    from exudyn_bearing.simulation.runner import SolverSettings, run_solver
+
+    mbs = exu.SystemContainer().AddSystem()
+    k = 2e9
+    housing = mbs.CreateRigidBody(inertia=InertiaCylinder(density=7850.0, length=0.04, outerRadius=0.12,
+                                                          innerRadius=0.09, axis=2),
+                                  referencePosition=[0.0, 0.0, 0.0], returnDict=True)["bodyNumber"]
+    mbs.CreateCartesianSpringDamper(itemNumbers=[mbs.CreateGround(), housing], stiffness=[k] * 3,
+                                    damping=[2e4] * 3, show=False)
+    mbs.CreateGenericJoint(itemNumbers=[mbs.CreateGround(), housing], position=[0.0, 0.0, 0.0],
+                           constrainedAxes=[0, 0, 0, 1, 1, 1], show=False)
+    h = CreateAngularContactBearing(mbs, innerRace=races.Driven(1800), outerRace=races.OnBody(housing),
+                                    axialForce=1300.0, show=False)
+    sensors = h.AddVibrationSensors(mbs, outputs=("Displacement", "Acceleration"))
+    mbs.Assemble()
+    run_solver(mbs, [h], 0.01, SolverSettings(output_step=1e-4))
+    disp = np.asarray(mbs.GetSensorStoredData(sensors["Displacement"]))
+    assert disp.shape[1] == 4
+    assert np.mean(disp[disp[:, 0] > 0.005, 3]) == pytest.approx(1300.0 / k, rel=0.05)
+
+
 def test_housing_and_sensors_refuse_bad_input():
     from exudyn_bearing import CreateAngularContactBearing, races
 
