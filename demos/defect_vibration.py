@@ -38,12 +38,13 @@ def cwru(run_time, out):
         peaks = ", ".join(f"{p:.2f}" for p, _ in r.envelope_peaks[:4])
         rows.append(f"| {name} | {key} | {f['nominal'][key]:.3f} | {f['kinematic'][key]:.3f} | {f['actual'][key]:.3f} "
                     f"| {r.envelope_peaks[0][0]:.2f} | {peaks} | {r.kinematic_cage_slip_percent:.3f} "
-                    f"| {r.wall_time_s:.1f} |")
+                    f"| {r.wall_time_s:.1f} | {r.solver['step_s'] * 1e6:.0f} µs, {r.solver['step_cuts']} |")
         print(f"{name}: {key} nominal {f['nominal'][key]:.3f} Hz, kinematic {f['kinematic'][key]:.3f}, actual "
               f"{f['actual'][key]:.3f}; envelope peaks (Hz) {peaks}; shaft {1797 / 60:.3f} Hz; "
               f"{len(r.defect_events)} passages; run {r.wall_time_s:.1f} s -> {png}", flush=True)
     table = ("| fault | line | nominal Hz | kinematic Hz | actual Hz | strongest envelope line Hz | "
-             "envelope peaks Hz | kinematic cage slip % | run s |\n|---|---|---|---|---|---|---|---|---|\n"
+             "envelope peaks Hz | kinematic cage slip % | run s | step, steps beyond the plan |\n"
+             "|---|---|---|---|---|---|---|---|---|---|\n"
              + "\n".join(rows) + "\n")
     return table
 

@@ -219,6 +219,12 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
 
     if not (math.isfinite(sample_rate) and sample_rate > 0):
         raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
+    if not (math.isfinite(rpm) and rpm > 0):
+        raise ValueError(f"rpm must be positive, got {rpm!r}")
+    if not (axial_force or radial_force):
+        raise ValueError("no load: give axial_force and/or radial_force, N")
+    if housing is not None and getattr(housing, "kind", None) != "housing":
+        raise ValueError(f"housing must be a races.Housing(...), got {housing!r}")
     if not (math.isfinite(time) and time > settle >= 0):
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
     housing = housing or Housing()
@@ -257,10 +263,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_i = rpm / 60.0
     resonance = math.sqrt(housing.support[0] / housing.mass) / (2 * math.pi)
     band = band or (0.6 * resonance, min(1.4 * resonance, 0.45 * sample_rate))
-    signal = acc[keep, 0] if radial_force else acc[keep, 2]  # along the load
-    if radial_force and axial_force:
-        signal = np.hypot(acc[keep, 0], acc[keep, 2]) * np.sign(acc[keep, 0])
-    f_env, a_env = envelope_spectrum(signal, sample_rate, band)
+    load = np.array([radial_force, 0.0, axial_force])
+    signal = acc[keep] @ (load / np.linalg.norm(load))  # along the load (x radial, z axial)
+    f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
@@ -310,11 +315,11 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
 
     settle = float(result.inputs.get("settle", 0.0))
     keep = result.time >= settle
-    axis = 0 if float(result.inputs.get("radial_force", 0.0)) else 2
-    x = result.acceleration[keep, axis]
+    load = np.array([float(result.inputs.get("radial_force", 0.0)), 0.0, float(result.inputs.get("axial_force", 0.0))])
+    x = result.acceleration[keep] @ (load / np.linalg.norm(load))  # along the load, as analysed
     fig, ax = plt.subplots(3, 1, figsize=(9, 9))
     ax[0].plot(result.time[keep], x, lw=0.5)
-    ax[0].set(xlabel="t (s)", ylabel="housing acceleration (m/s²)", title=title)
+    ax[0].set(xlabel="t (s)", ylabel="housing acceleration along the load (m/s²)", title=title)
     f, a = amplitude_spectrum(x, result.sample_rate)
     ax[1].semilogy(f, np.maximum(a, 1e-12), lw=0.6)
     ax[1].axvspan(*result.band, color="0.9")
