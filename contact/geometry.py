@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = [
-    "race_sign", "curvature_radii", "rolling_radius", "free_contact_angle", "diametral_clearance",
+    "race_sign", "curvature_radii", "rolling_radius", "contact_path_radius", "free_contact_angle", "diametral_clearance",
     "groove_centres", "GrooveContact", "groove_contact",
 ]
 
@@ -29,6 +29,12 @@ def race_sign(race):
     if not np.all(np.abs(sign) == 1.0):
         raise ValueError("race must be 'inner', 'outer' or an array of -1 (inner) / +1 (outer)")
     return sign
+
+
+def contact_path_radius(ball_diameter, pitch_diameter, contact_angle, race):
+    """Radius of a race's contact path about its axis, m: (d_m - D cos a)/2 inner,
+    (d_m + D cos a)/2 outer (MODEL.md §2)."""
+    return 0.5 * (pitch_diameter + race_sign(race) * ball_diameter * np.cos(contact_angle))
 
 
 def rolling_radius(ball_diameter, pitch_diameter, contact_angle, race):

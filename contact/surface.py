@@ -34,6 +34,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
+from .geometry import contact_path_radius
+
 __all__ = ["Defect", "Waviness", "SurfaceModel", "SurfaceRecord", "NO_SURFACE", "surface_record", "race_height",
            "race_heights", "sag"]
 
@@ -203,7 +205,7 @@ def surface_record(surface: SurfaceModel | None, bearing) -> SurfaceRecord:
     for d in surface.defects:
         k = RACES.index(d.race)
         conformity = bearing.inner_conformity if k == 0 else bearing.outer_conformity
-        circumference = math.pi * (dm + (2 * k - 1) * diam * math.cos(alpha))
+        circumference = 2.0 * math.pi * contact_path_radius(diam, dm, alpha, d.race)
         if d.length >= circumference:
             raise ValueError(f"defect.length: {d.length} m is longer than the {d.race} race's circumference "
                              f"{circumference:.6g} m")

@@ -43,6 +43,8 @@ import math
 
 import numpy as np
 
+from contact.geometry import contact_path_radius
+
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
            "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
            "recommended_step", "recommended_absolute_tolerance"]
@@ -125,10 +127,8 @@ def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
     w_c = bearing.cage_speed(w_i, w_o)
     step = math.inf
     for d in surface.defects:
-        inner = d.race == "inner"
-        rho = 0.5 * bearing.pitch_diameter + (-1.0 if inner else 1.0) * bearing.ball_radius * math.cos(
-            bearing.contact_angle)
-        speed = abs(w_c - (w_i if inner else w_o)) * rho
+        rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, d.race)
+        speed = abs(w_c - (w_i if d.race == "inner" else w_o)) * rho
         if speed > 0.0:
             step = min(step, d.length / (steps_per_passage * speed))
     return step

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from contact.geometry import contact_path_radius
 from ..bearing import Bearing
 from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE
 
@@ -33,7 +34,7 @@ def kinematic_fault_frequencies(bearing: Bearing, inner_hz: float, outer_hz: flo
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
     gamma = bearing.ball_diameter * math.cos(alpha) / bearing.pitch_diameter
     rel = inner_hz - outer_hz
-    ftf = outer_hz + 0.5 * rel * (1.0 - gamma)
+    ftf = bearing.cage_speed(inner_hz, outer_hz, alpha)  # linear in the speeds: Hz in, Hz out
     return {"BPFO": bearing.balls * abs(ftf - outer_hz), "BPFI": bearing.balls * abs(inner_hz - ftf),
             "BSF": abs(rel) * bearing.pitch_diameter * (1.0 - gamma * gamma) / (2.0 * bearing.ball_diameter),
             "FTF": abs(ftf)}
@@ -55,17 +56,15 @@ def rolling_fault_frequencies(results, bearing: Bearing) -> dict:
             "FTF": abs(f_c)}
 
 
-def actual_fault_frequencies(results, fraction: float = 1.0) -> dict:
+def actual_fault_frequencies(results) -> dict:
     """The fault frequencies of a run, Hz: from its mean cage speed f_c, race speeds and the
-    balls' spin relative to the cage over the last ``fraction`` of the run (``BearingResults``):
-    BPFO = Z |f_c − f_o|, BPFI = Z |f_i − f_c|, BSF = |ω_ball − ω_c e_z| / 2π, FTF = |f_c|."""
-    n = len(results.time)
-    sl = slice(n - max(int(round(fraction * n)), 1), n)
-    f_c = float(np.mean(results.cage_speed[sl])) / (2 * math.pi)
-    f_i = float(np.mean(results.inner_speed[sl])) / (2 * math.pi)
-    f_o = float(np.mean(results.outer_speed[sl])) / (2 * math.pi)
-    w = results.ball_omega_orbiting[sl].copy()  # (e_psi, e_r, e_z) components
-    w[..., 2] -= results.cage_speed[sl, None]
+    balls' spin relative to the cage (``BearingResults``): BPFO = Z |f_c − f_o|,
+    BPFI = Z |f_i − f_c|, BSF = |ω_ball − ω_c e_z| / 2π, FTF = |f_c|."""
+    f_c = float(np.mean(results.cage_speed)) / (2 * math.pi)
+    f_i = float(np.mean(results.inner_speed)) / (2 * math.pi)
+    f_o = float(np.mean(results.outer_speed)) / (2 * math.pi)
+    w = results.ball_omega_orbiting.copy()  # (e_psi, e_r, e_z) components
+    w[..., 2] -= results.cage_speed[:, None]
     spin = float(np.mean(np.linalg.norm(w, axis=-1))) / (2 * math.pi)
     z = results.ball_orbital_speed.shape[1]
     return {"BPFO": z * abs(f_c - f_o), "BPFI": z * abs(f_i - f_c), "BSF": spin, "FTF": abs(f_c)}
@@ -129,8 +128,7 @@ def defect_events(results, bearing: Bearing, surface) -> list:
     turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
     events = []
     for i, d in enumerate(surface.defects):
-        sign = -1.0 if d.race == "inner" else 1.0
-        rho = 0.5 * bearing.pitch_diameter + sign * bearing.ball_radius * math.cos(bearing.contact_angle)
+        rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, d.race)
         half = 0.5 * d.length / rho  # the defect's half angle on the contact path
         for j in range(psi.shape[1]):
             rel = psi[:, j] - turned[d.race] - math.radians(d.angle_deg)
