@@ -15,6 +15,7 @@ from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
 from .terms import contact_terms, surface_terms, term_record
+from .surface import ball_heights
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS", "CROOK_MODELS"]
 
@@ -298,11 +299,23 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)
 
 
-def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch_diameter) -> ContactKinematics:
-    """``kin`` with the race surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md
-    §13): approach δ + h and its rate + (dh/dθ) θ̇; ``race`` (0 inner, 1 outer) and ``ball``
-    index of each contact; D and d_m in m (the contacts' reduced radii R_x, §2)."""
+def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch_diameter, ball_rotation=None,
+                 ball_omega=None, race_axis=None, race_omega=None) -> ContactKinematics:
+    """``kin`` with the surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md §13):
+    approach δ + h and its rate + dh/dt; ``race`` (0 inner, 1 outer) and ``ball`` index of
+    each contact; D and d_m in m (the contacts' reduced radii R_x, §2). A ball defect
+    (eq. 13.3) needs per contact the ball's ``ball_rotation`` (n, 3, 3) and ``ball_omega``
+    (n, 3) rad/s, and the race's ``race_axis`` (n, 3) and ``race_omega`` (n, 3) rad/s."""
     race = np.asarray(race)
     r_x = geometry.rolling_radius(ball_diameter, pitch_diameter, kin.contact_angle, 2.0 * race - 1.0)
     h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)
-    return replace(kin, penetration=kin.penetration + h, penetration_rate=kin.penetration_rate + slope * kin.orbit_rate)
+    rate = kin.penetration_rate + slope * kin.orbit_rate
+    if terms.surface.material:
+        if ball_rotation is None:
+            raise ValueError("with_surface: a ball defect needs ball_rotation, ball_omega, race_axis and race_omega")
+        orbit = np.einsum("ij,ij->i", race_omega, race_axis) + kin.orbit_rate
+        pit = ball_heights(terms.surface, ball, ball_rotation, kin.normal, kin.rolling, kin.transverse,
+                           ball_omega - orbit[:, None] * race_axis, 0.5 * ball_diameter, r_x)
+        h = h + pit[0]
+        rate = rate + pit[1]
+    return replace(kin, penetration=kin.penetration + h, penetration_rate=rate)

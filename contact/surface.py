@@ -24,6 +24,12 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
   edge and is re-stressed at the exit edge; over a notch shorter than 2√(d (2 R_x − d)) it
   never reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal
   stays the groove's (the edge's own normal is not modelled).
+* **Ball defect**: a round pit of diameter L on a ball, fixed in the ball's material. At each
+  of its two contacts the pit's centre sits at (along, across) = r (atan2(d·t1, d·n),
+  atan2(d·t2, d·n)) from the contact, d its direction from the ball centre; the contact path
+  crosses it on a chord ℓ = 2 √((L/2)² − across²), over which eq. 13.2 holds with ℓ for L
+  (eq. 13.3, :func:`ball_height`). The pit meets a race once per turn of the ball relative to
+  the contact: the two races together at twice the ball-spin frequency.
 """
 from __future__ import annotations
 
@@ -37,9 +43,10 @@ from numba import njit
 from .geometry import contact_path_radius
 
 __all__ = ["Defect", "Waviness", "SurfaceModel", "SurfaceRecord", "NO_SURFACE", "surface_record", "race_height",
-           "race_heights", "sag"]
+           "race_heights", "ball_height", "ball_heights", "ball_circles", "sag"]
 
 RACES = ("inner", "outer")
+PLACES = RACES + ("ball",)
 
 
 def _number(key: str, value, *, positive: bool = True, allow_zero: bool = False) -> float:
@@ -63,21 +70,29 @@ class Defect:
 
     Parameters
     ----------
-    race : {'inner', 'outer'}
+    race : {'inner', 'outer', 'ball'}
     angle_deg : float
-        Azimuth of its centre in the race's own frame, degrees (an inner-race defect turns
-        with the inner race).
+        On a race: azimuth of its centre in the race's own frame, degrees (an inner-race
+        defect turns with the inner race). On a ball: degrees from the ball's outer-race
+        contact at the start about its start spin axis relative to the cage, i.e. on the
+        circle that contact traces on the ball (:func:`ball_circles`). The inner contact
+        traces the same circle only where the contact line is perpendicular to the spin axis
+        (a deep-groove bearing under radial load): there the pit meets both races.
     length : float
-        Along the rolling direction, m (arc length on the contact path).
+        Along the rolling direction, m (arc length on the contact path); on a ball, the
+        diameter of a round pit (arc length on the ball, eq. 13.3).
     depth : float
         m. A ball reaches s(L/2) of it (:meth:`reach`); a deeper notch is allowed and stated.
     width : float or None
         Across the raceway, m (arc length on the groove section); None: the whole raceway.
+        Not for a ball (a round pit).
     offset : float
         Across the raceway, of its centre line from the nominal contact path, m (arc length on
-        the groove section, toward larger contact angles).
+        the groove section, toward larger contact angles). Not for a ball.
     edge : float
         Length of the depth ramp at each edge, m; 0: a sharp edge (an EDM notch).
+    ball : int or None
+        Index of the ball (0 .. Z - 1) for ``race = 'ball'``; None otherwise.
     """
 
     race: str
@@ -87,13 +102,20 @@ class Defect:
     width: float | None = None
     offset: float = 0.0
     edge: float = 0.0
+    ball: int | None = None
 
     def __post_init__(self) -> None:
+        if self.race not in PLACES:
+            raise ValueError(f"defect.race must be 'inner', 'outer' or 'ball', got {self.race!r}")
         if self.race == "ball":
-            raise ValueError("defect.race: a defect on a ball is not modelled yet (races 'inner' or 'outer'); "
-                             "model an oversize ball with waviness.ball_diameter_variation")
-        if self.race not in RACES:
-            raise ValueError(f"defect.race must be 'inner' or 'outer', got {self.race!r}")
+            if isinstance(self.ball, bool) or not isinstance(self.ball, (int, np.integer)) or self.ball < 0:
+                raise ValueError(f"defect.ball: a ball defect needs the ball's index (an integer >= 0), got "
+                                 f"{self.ball!r}")
+            if self.width is not None or self.offset != 0.0:
+                raise ValueError("defect.width: a ball defect is a round pit of diameter `length`; width and "
+                                 "offset are for a race")
+        elif self.ball is not None:
+            raise ValueError(f"defect.ball: only a ball defect (race = 'ball') has a ball index, got {self.ball!r}")
         _number("defect.angle_deg", self.angle_deg, positive=False)
         _number("defect.length", self.length)
         _number("defect.depth", self.depth)
@@ -186,23 +208,60 @@ class SurfaceRecord(NamedTuple):
     defects: np.ndarray
     ball_excess: np.ndarray  #: (Z,) radius excess ΔD/2 of each ball, m; (0,): none
     nominal_angle: float  #: the bearing's contact angle, rad (the defects' offset is from it)
+    #: (n, 7): ball, unit direction of the pit's centre in the ball's body frame (3), diameter m,
+    #: depth m, edge m (eq. 13.3)
+    ball_defects: np.ndarray = np.zeros((0, 7))
+
+    @property
+    def material(self) -> bool:
+        """Whether a force depends on where a ball's material is (a ball defect): the ball's
+        orientation enters the contacts (and the Jacobian's rotation columns)."""
+        return self.ball_defects.shape[0] > 0
 
 
-NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 8)), np.zeros(0), 0.0)
+NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 8)), np.zeros(0), 0.0, np.zeros((0, 7)))
 
 
-def surface_record(surface: SurfaceModel | None, bearing) -> SurfaceRecord:
+def ball_circles(bearing) -> np.ndarray:
+    """(Z, 2, 3): per ball, the zero direction and the spin axis (unit vectors in the ball's
+    body frame) about which a ball defect's ``angle_deg`` turns it, for balls that start at
+    azimuths 2π j / Z in a frame equal to their body frames, spinning about the bearing axis:
+    zero = e_r (the outer contact at 0°), axis = e_z. The builder passes its start state's
+    (zero: the outer-race contact direction, axis: the spin relative to the cage)."""
+    psi = 2.0 * np.pi * np.arange(bearing.balls) / bearing.balls
+    out = np.zeros((bearing.balls, 2, 3))
+    out[:, 0, 0], out[:, 0, 1], out[:, 1, 2] = np.cos(psi), np.sin(psi), 1.0
+    return out
+
+
+def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> SurfaceRecord:
     """The :class:`SurfaceRecord` of ``surface`` on ``bearing`` (anything with ``balls``,
     ``ball_diameter``, ``pitch_diameter``, ``inner_conformity``, ``outer_conformity``,
     ``contact_angle``), checked against its geometry: a defect longer than its race's
-    circumference or wider than the groove, a wrong number of ball-diameter variations."""
+    circumference or wider than the groove, a ball index out of range, a wrong number of
+    ball-diameter variations. ``circles``: the balls' start circles (:func:`ball_circles`,
+    its default) on which a ball defect's ``angle_deg`` is measured."""
     if surface is None or not surface.active:
         return NO_SURFACE
     if not isinstance(surface, SurfaceModel):
         raise ValueError(f"surface must be a SurfaceModel, got {surface!r}")
     diam, dm, alpha = float(bearing.ball_diameter), float(bearing.pitch_diameter), float(bearing.contact_angle)
-    rows = []
+    rows, pits = [], []
     for d in surface.defects:
+        if d.race == "ball":
+            if d.ball >= bearing.balls:
+                raise ValueError(f"defect.ball: {d.ball} is not a ball of this bearing (0 .. {bearing.balls - 1})")
+            if d.length >= 0.5 * math.pi * diam:
+                raise ValueError(f"defect.length: {d.length} m is longer than half the ball's circumference "
+                                 f"{0.5 * math.pi * diam:.6g} m")
+            zero, axis = np.asarray(ball_circles(bearing) if circles is None else circles, dtype=float)[d.ball]
+            zero = zero / np.linalg.norm(zero)
+            axis = axis / np.linalg.norm(axis)
+            phi = math.radians(d.angle_deg)  # zero turned about the axis (Rodrigues)
+            direction = (math.cos(phi) * zero + math.sin(phi) * np.cross(axis, zero)
+                         + (1.0 - math.cos(phi)) * (axis @ zero) * axis)
+            pits.append((d.ball, *direction, d.length, d.depth, d.edge))
+            continue
         k = RACES.index(d.race)
         conformity = bearing.inner_conformity if k == 0 else bearing.outer_conformity
         circumference = 2.0 * math.pi * contact_path_radius(diam, dm, alpha, d.race)
@@ -226,7 +285,7 @@ def surface_record(surface: SurfaceModel | None, bearing) -> SurfaceRecord:
         if np.any(excess <= -0.5 * diam):
             raise ValueError("waviness.ball_diameter_variation: a ball would have no diameter")
     return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 8),
-                         excess, alpha)
+                         excess, alpha, np.array(pits, dtype=float).reshape(-1, 7))
 
 
 @njit(cache=True, error_model="numpy")
@@ -259,24 +318,72 @@ def race_height(surface, race, theta, contact_angle, point_radius, ball, rolling
         across = defects[i, 7] * (contact_angle - surface.nominal_angle) - defects[i, 5]
         if abs(across) > defects[i, 4]:
             continue
-        drop = depth
-        slope = 0.0  # d drop / dx
-        if edge > 0.0:
-            ramp = min(x, length - x)
-            if ramp < edge:
-                drop = depth * ramp / edge
-                slope = depth / edge if x < length - x else -depth / edge
-        u = min(x, length - x)  # the nearer edge carries the ball (eq. 13.2)
-        if u < rolling_radius:
-            s = rolling_radius - math.sqrt(rolling_radius * rolling_radius - u * u)
-            if s < drop:
-                drop = s
-                slope = u / (rolling_radius - s)
-                if x > length - x:
-                    slope = -slope
+        drop, slope = path_drop(x, length, depth, edge, rolling_radius)
         h -= drop
         dh -= slope * point_radius
     return h, dh
+
+
+@njit(cache=True, error_model="numpy")
+def path_drop(x, length, depth, edge, rolling_radius):
+    """(drop m, d drop/dx) of the contact at ``x`` (m from the entry edge) over a defect of
+    ``length``, ``depth`` and ``edge`` ramps (m), R_x = ``rolling_radius`` (m): eq. 13.2."""
+    drop = depth
+    slope = 0.0  # d drop / dx
+    if edge > 0.0:
+        ramp = min(x, length - x)
+        if ramp < edge:
+            drop = depth * ramp / edge
+            slope = depth / edge if x < length - x else -depth / edge
+    u = min(x, length - x)  # the nearer edge carries the ball (eq. 13.2)
+    if u < rolling_radius:
+        s = rolling_radius - math.sqrt(rolling_radius * rolling_radius - u * u)
+        if s < drop:
+            drop = s
+            slope = u / (rolling_radius - s)
+            if x > length - x:
+                slope = -slope
+    return drop, slope
+
+
+@njit(cache=True, error_model="numpy")
+def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius):
+    """(h m, dh/dt m/s) of the defects of ``ball`` at one of its contacts (eq. 13.3):
+    ``rotation`` the ball's body-to-global rotation (3, 3); the contact's ``normal`` n,
+    ``rolling`` t1 and ``transverse`` t2 (global unit vectors, (3,)); ``relative_omega`` the
+    ball's angular velocity relative to the contact frame, which turns with the ball's orbit
+    (ω_ball − Ω_orbit e_axis, rad/s, (3,)); ``ball_radius`` r and R_x in m."""
+    h = 0.0
+    rate = 0.0
+    pits = surface.ball_defects
+    for i in range(pits.shape[0]):
+        if int(pits[i, 0]) != ball:
+            continue
+        d = np.empty(3)
+        for r in range(3):
+            d[r] = rotation[r, 0] * pits[i, 1] + rotation[r, 1] * pits[i, 2] + rotation[r, 2] * pits[i, 3]
+        c = d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]
+        if c <= 0.0:  # on the ball's other half
+            continue
+        a = d[0] * rolling[0] + d[1] * rolling[1] + d[2] * rolling[2]
+        e = d[0] * transverse[0] + d[1] * transverse[1] + d[2] * transverse[2]
+        half = 0.5 * pits[i, 4]
+        across = ball_radius * math.atan2(e, c)
+        if abs(across) >= half:
+            continue
+        chord = 2.0 * math.sqrt(half * half - across * across)
+        x = ball_radius * math.atan2(a, c) + 0.5 * chord
+        if x <= 0.0 or x >= chord:
+            continue
+        drop, slope = path_drop(x, chord, pits[i, 5], min(pits[i, 6], 0.5 * chord), rolling_radius)
+        # d(along)/dt: d turns with the ball's spin relative to the contact frame
+        wx, wy, wz = relative_omega[0], relative_omega[1], relative_omega[2]
+        ddx, ddy, ddz = wy * d[2] - wz * d[1], wz * d[0] - wx * d[2], wx * d[1] - wy * d[0]
+        a_t = ddx * rolling[0] + ddy * rolling[1] + ddz * rolling[2]
+        c_t = ddx * normal[0] + ddy * normal[1] + ddz * normal[2]
+        h -= drop
+        rate -= slope * ball_radius * (a_t * c - a * c_t) / (a * a + c * c)
+    return h, rate
 
 
 @njit(cache=True, error_model="numpy")
@@ -284,6 +391,28 @@ def _race_heights(surface, race, theta, contact_angle, point_radius, ball, rolli
     for i in range(theta.shape[0]):
         out[0, i], out[1, i] = race_height(surface, race[i], theta[i], contact_angle[i], point_radius[i], ball[i],
                                            rolling_radius[i])
+
+
+@njit(cache=True, error_model="numpy")
+def _ball_heights(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius,
+                  out):
+    for i in range(ball.shape[0]):
+        out[0, i], out[1, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
+                                           relative_omega[i], ball_radius, rolling_radius[i])
+
+
+def ball_heights(surface: SurfaceRecord, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+                 rolling_radius) -> np.ndarray:
+    """:func:`ball_height` for n contacts (the numpy path): ``ball`` (n,), ``rotation``
+    (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s), (2, n)."""
+    def arr(x):
+        return np.ascontiguousarray(x, dtype=float)
+
+    ball = np.ascontiguousarray(ball, dtype=np.int64)
+    out = np.empty((2, ball.shape[0]))
+    _ball_heights(surface, ball, arr(rotation), arr(normal), arr(rolling), arr(transverse), arr(relative_omega),
+                  float(ball_radius), arr(np.broadcast_to(rolling_radius, ball.shape)), out)
+    return out
 
 
 def race_heights(surface: SurfaceRecord, race, theta, contact_angle, point_radius, ball, rolling_radius) -> np.ndarray:

@@ -11,7 +11,8 @@ the stages below for every loaded contact — the compiled kernel
 computed once, by the same code, in both. The stages, in the order a contact is evaluated:
 
 0. :func:`surface_height` — the race surface's height toward the ball at the contact (defects,
-   waviness, ball-size variation, §13): added to the elastic approach before Hertz;
+   waviness, ball-size variation, §13), and :func:`ball_surface_height` the ball's (a pit on
+   the ball, which turns with the ball's material): added to the elastic approach before Hertz;
 1. :func:`film_factor` — a factor on the isothermal central film h (the thermal film, §11e);
 2. :func:`contact_loads` — forces and couples added on the ball (the rolling resistance,
    §11b): a force along the rolling direction t1 at the contact point and a couple about
@@ -33,10 +34,10 @@ from .kernel_cache import drop_stale
 drop_stale(__file__, Path(__file__).parent.glob("*.py"))
 
 from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
-from .surface import NO_SURFACE, SurfaceRecord, race_height  # noqa: E402
+from .surface import NO_SURFACE, SurfaceRecord, ball_height, race_height  # noqa: E402
 from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
 
-__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "film_factor", "contact_loads",
+__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor", "contact_loads",
            "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]
 
 #: floor of the thermal film factor φ_T (MODEL.md §11e)
@@ -105,6 +106,17 @@ def surface_height(terms, race, theta, contact_angle, point_radius, ball, rollin
     if s.waviness.shape[0] + s.defects.shape[0] + s.ball_excess.shape[0] == 0:
         return 0.0, 0.0
     return race_height(s, race, theta, contact_angle, point_radius, ball, rolling_radius)
+
+
+@njit(cache=True, error_model="numpy")
+def ball_surface_height(terms, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+                        rolling_radius):
+    """Stage 0, the ball's side: (h m, dh/dt m/s) of the pits on ``ball`` at a contact by
+    :func:`contact.surface.ball_height` (eq. 13.3); (0, 0) without ball defects."""
+    if terms.surface.ball_defects.shape[0] == 0:
+        return 0.0, 0.0
+    return ball_height(terms.surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+                       rolling_radius)
 
 
 @njit(cache=True, error_model="numpy")

@@ -42,6 +42,12 @@ Example::
     length = 0.18e-3                 # along the rolling direction, m
     depth = 0.28e-3                  # m
     width = 1e-3                     # across the raceway, m; absent: the whole raceway
+    [[defect]]                       # a pit on a ball: round, `length` its diameter
+    race = "ball"
+    ball = 3                         # which ball, 0 .. Z - 1
+    angle_deg = 0.0                  # from the ball's outer contact at the start, about its spin axis
+    length = 0.5e-3
+    depth = 10e-6
     [waviness]                       # optional: [order, amplitude_m, phase_deg] per line
     outer = [[17, 0.2e-6, 0.0]]
     inner = []

@@ -215,7 +215,7 @@ def test_barus_cap_compiled_kernel(exponent):
     geometry = compiled.RaceGeometry(np.array([[R_I, Z_I, TUBE_I], [R_O, Z_O, TUBE_O]]),
                                      np.array([B.inner_conformity, B.outer_conformity]), np.array([-1.0, 1.0]),
                                      B.ball_radius, B.pitch_diameter, B.effective_modulus, B.ball_mass)
-    compiled.race_contacts(compiled.BallStates(c[None], v[None], w[None]), compiled.RaceFrames(ro, rr, rv, rw),
+    compiled.race_contacts(compiled.BallStates(c[None], v[None], w[None], np.empty((1, 0, 3, 3))), compiled.RaceFrames(ro, rr, rv, rw),
                            geometry, compiled.law_record(law, LUB), compiled.crook_tables(law.quadrature_order),
                            term_record(law, LUB, B.ball_diameter),
                            compiled.ContactOutputs(force, moment, penetration, load))

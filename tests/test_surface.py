@@ -21,7 +21,10 @@ R = B.ball_radius
     (lambda: Defect("outer", 0.0, 1e-3, 1e-5, width=-1e-3), "defect.width"),
     (lambda: Defect("outer", math.nan, 1e-3, 1e-5), "defect.angle_deg"),
     (lambda: Defect("cage", 0.0, 1e-3, 1e-5), "defect.race"),
-    (lambda: Defect("ball", 0.0, 1e-3, 1e-5), "defect.race"),
+    (lambda: Defect("ball", 0.0, 1e-3, 1e-5), "defect.ball"),
+    (lambda: Defect("ball", 0.0, 1e-3, 1e-5, ball=-1), "defect.ball"),
+    (lambda: Defect("ball", 0.0, 1e-3, 1e-5, ball=2, width=1e-3), "defect.width"),
+    (lambda: Defect("outer", 0.0, 1e-3, 1e-5, ball=2), "defect.ball"),
     (lambda: Defect("outer", 0.0, 1e-3, 1e-5, edge=0.6e-3), "defect.edge"),
     (lambda: Waviness(outer=((1, 1e-6, 0.0),)), "waviness.outer"),
     (lambda: Waviness(inner=((5, 0.0, 0.0),)), "waviness.inner: amplitude"),
@@ -42,6 +45,10 @@ def test_surfaces_are_checked_against_the_bearing():
         surface_record(SurfaceModel((Defect("inner", 0.0, 1e-3, 1e-5, width=4 * B.ball_diameter),)), B)
     with pytest.raises(ValueError, match="ball_diameter_variation: one value per ball"):
         surface_record(SurfaceModel(waviness=Waviness(ball_diameter_variation=(1e-6, 0.0))), B)
+    with pytest.raises(ValueError, match=r"defect\.ball: 16 is not a ball"):
+        surface_record(SurfaceModel((Defect("ball", 0.0, 1e-3, 1e-5, ball=B.balls),)), B)
+    with pytest.raises(ValueError, match=r"defect\.length: .* half the ball's circumference"):
+        surface_record(SurfaceModel((Defect("ball", 0.0, 0.04, 1e-5, ball=0),)), B)
 
 
 def test_the_builder_refuses_a_surface_that_does_not_fit_before_touching_mbs():
@@ -55,7 +62,8 @@ def test_the_builder_refuses_a_surface_that_does_not_fit_before_touching_mbs():
 
 
 SURFACE = SurfaceModel((Defect("outer", 10.0, 0.5e-3, 0.28e-3, width=2e-3, offset=1e-4),
-                        Defect("inner", -45.0, 2e-3, 20e-6, edge=0.3e-3)),
+                        Defect("inner", -45.0, 2e-3, 20e-6, edge=0.3e-3),
+                        Defect("ball", 30.0, 0.5e-3, 10e-6, ball=3)),
                        Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
                                 ball_diameter_variation=(2e-6,) + (0.0,) * (B.balls - 1)))
 

@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit, prange
 
 from ..surface import SurfaceRecord
-from ..terms import ContactState, TermRecord, contact_loads, film_factor, surface_height
+from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
 from .crook import crook_one
 
 __all__ = ["race_contacts", "race_contacts_parallel", "rotation_matrices"]
@@ -130,6 +130,15 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
+    if terms.surface.ball_defects.shape[0] > 0:  # a pit on the ball, where its material is (eq. 13.3)
+        orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
+        pit, pit_rate = ball_surface_height(
+            terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
+            (wbx - orbit * R[0, 2], wby - orbit * R[1, 2], wbz - orbit * R[2, 2]), ball_radius, r_x)
+        if pit != 0.0:
+            pen += pit
+            rate += pit_rate
+            penetration[ib, k, j] = pen
     # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
     r_y = f_conf * diam / (2.0 * f_conf - 1.0)
     ratio = max(r_y / r_x, 1.0)
@@ -191,7 +200,8 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
     Parameters
     ----------
     balls : BallStates
-        Ball centres (m), velocities (m/s), GLOBAL angular velocities (rad/s), (B, Z, 3).
+        Ball centres (m), velocities (m/s), GLOBAL angular velocities (rad/s), (B, Z, 3), and
+        rotations (B, Z, 3, 3), read only when a ball has a defect (else (B, 0, 3, 3) will do).
     frames : RaceFrames
         Origin, rotation (third column: axis), origin velocity and angular velocity of the
         inner (index 0) and outer (1) race frames of each state.
@@ -219,7 +229,7 @@ def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, tod
     # numba's parallel loop passes records of arrays field by field, not nested ones: the terms'
     # surface record travels as its arrays and is rebuilt per contact (no copy)
     heating, width = terms.heating, terms.rolling_width
-    waves, defects, excess, nominal = terms.surface
+    waves, defects, excess, nominal, pits = terms.surface
     for n in prange(todo.shape[0]):
-        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal))
+        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal, pits))
         _race_contact(todo[n], balls, frames, geometry, law, tables, one, out)

@@ -61,6 +61,9 @@ class BallStates(NamedTuple):
     position: np.ndarray  #: centres, m
     velocity: np.ndarray  #: m/s
     omega: np.ndarray  #: angular velocities, rad/s
+    #: body-to-global rotations (B, Z, 3, 3), read only for a ball defect (contact.surface,
+    #: eq. 13.3); (B, 0, 3, 3) otherwise
+    rotation: np.ndarray
 
 
 class BodyStates(NamedTuple):

@@ -76,8 +76,9 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
         out, react, _, _, _ = con._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"], raw_reactions=raw)
         jac = np.empty((n6, n6))
         kernels.jacobian_assemble(out, react, steps, arrays[:3] + arrays[4:], f_q, f_qt, jac)
-        kernels.ball_rotation_columns(out, react, steps, spec["wcol"], arrays[4], spec["ball_group"], arrays[6],
-                                      arrays[7], np.ascontiguousarray(wl), f_q, jac)
+        if not spec["material"]:
+            kernels.ball_rotation_columns(out, react, steps, spec["wcol"], arrays[4], spec["ball_group"], arrays[6],
+                                          arrays[7], np.ascontiguousarray(wl), f_q, jac)
         if raw is not None:
             kernels.race_translation_columns(raw["react"], steps, spec["tcol"], spec["chain"], spec["chain_rows"],
                                              arrays[6], pos, np.ascontiguousarray(rot), f_q, f_qt, jac)
@@ -132,9 +133,11 @@ def jacobian_columns(con) -> dict:
     columns = [(gi, group, k, which) for gi, group in enumerate(groups) for k in range(6)
                for which in ("q", "v") if k not in frozen.get(int(group[0]), ())]
     # the compiled path takes the balls' rotation columns from their angular velocity
-    # columns (kernels.ball_rotation_columns): three perturbed states fewer
+    # columns (kernels.ball_rotation_columns): three perturbed states fewer. Not with a ball
+    # defect: then the forces depend on where a ball's material is, and they are perturbed
     is_ball = [int(group[0]) in ball_slots for group in groups]
-    kept = [c for c in columns if not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]
+    material = con.terms.surface.material
+    kept = [c for c in columns if material or not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]
     # ... and a race's translation columns from the balls' translation columns: a ball-race
     # contact depends on the two positions and velocities only through their differences
     # (kernels.race_translation_columns). Not for the race guiding the cage (its land
@@ -178,7 +181,7 @@ def jacobian_columns(con) -> dict:
               np.array(others, dtype=np.int64))
     con._jac_spec = dict(columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots,
                           coupled=coupled, same=same, arrays=arrays, wcol=wcol, ball_group=ball_group,
-                          turn={}, chain=np.array(chain, dtype=np.int64), tcol=tcol,
+                          turn={}, chain=np.array(chain, dtype=np.int64), tcol=tcol, material=material,
                           chain_rows=np.array([6 if con.held.get(s_) is None else 3 for s_ in chain],
                                               dtype=np.int64))
     return con._jac_spec

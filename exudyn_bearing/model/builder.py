@@ -40,6 +40,19 @@ from .predictor import install_predictor
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
 
+def _ball_circles(frame, outer_contact, e_z, omega, orbit):
+    """(Z, 2, 3): per ball, the zero direction and spin axis about which a ball defect's
+    ``angle_deg`` turns it (contact.surface.ball_circles), in the ball's body frame (= global
+    at t = 0): the direction of its outer-race contact (``outer_contact``, bearing frame) and
+    the axis of its start spin relative to the cage."""
+    out = np.empty((len(outer_contact), 2, 3))
+    for j in range(len(outer_contact)):
+        spin = omega[j] - orbit[j] * e_z
+        axis = spin / np.linalg.norm(spin) if np.linalg.norm(spin) > 1e-9 else e_z
+        out[j] = frame @ (outer_contact[j] / np.linalg.norm(outer_contact[j])), frame @ axis
+    return out
+
+
 def _check_frame(position, rotation):
     position = np.asarray(position, dtype=float)
     rotation = np.asarray(rotation, dtype=float)
@@ -374,7 +387,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
                                  layout, origin, frame, race_frames,
                                  lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven,
-                                 surface=surface)
+                                 surface=surface,
+                                 ball_circles=_ball_circles(frame, p_out - c_loc, e_z, omega_loc, w_c))
     connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
                                           for n in nodes])
     ref = connector.reference

@@ -233,7 +233,11 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             v[0, j, i] = vel[0, balls[j], i]
             w[0, j, i] = omega[0, balls[j], i]
     force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
-    balls_now = kernels.BallStates(c, v, w)
+    zr = z if terms.surface.ball_defects.shape[0] > 0 else 0  # a ball defect reads where the material is
+    a = np.empty((1, zr, 3, 3))
+    for j in range(zr):
+        a[0, j] = rot[0, balls[j]]
+    balls_now = kernels.BallStates(c, v, w, a)
     kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, law, tables, terms,
                           kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z)))
     cs = cage_slot if cage_slot >= 0 else 0
@@ -347,6 +351,8 @@ class CompiledForces:
                                     else x for x in self.physics)
         self._work = {}
         self._patterns = {}
+        self.material = con.terms.surface.material  # a ball defect: the contacts read the balls' rotations
+        self._no_rotations = {}
         # ((t, force function), race speeds, applied force, driven rows) of the last call
         self._time_inputs = ((math.nan, None),)
         self.kinematic = [(i, con.races[k]) for i, k in enumerate(("inner", "outer")) if self.slots[i] < 0]
@@ -391,6 +397,12 @@ class CompiledForces:
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load)
         return status, self.out
 
+    def _no_rotation(self, bsz):
+        """The empty (B, 0, 3, 3) ball rotations of contacts that do not read them."""
+        if bsz not in self._no_rotations:
+            self._no_rotations[bsz] = np.empty((bsz, 0, 3, 3))
+        return self._no_rotations[bsz]
+
     def _arrays(self, bsz):
         if bsz not in self._work:
             z = self.balls.shape[0]
@@ -423,7 +435,8 @@ class CompiledForces:
         frames = kernels.RaceFrames(w["ro"], w["rr"], w["rv"], w["rw"])
         _race_frames(pos, rot, vel, omega, self.mount, fixed_omega, frames)
         # C-ordered copies: numba compiles one machine code per memory layout
-        balls = kernels.BallStates(*(np.take(x, self.balls, axis=1) for x in (pos, vel, omega)))
+        balls = kernels.BallStates(*(np.take(x, self.balls, axis=1) for x in (pos, vel, omega)),
+                                   np.take(rot, self.balls, axis=1) if self.material else self._no_rotation(bsz))
         ph = self.physics
         args = (balls, frames, ph.geometry, ph.law, ph.tables, ph.terms,
                 kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
@@ -463,7 +476,7 @@ class CompiledForces:
         kernels.cage_and_drag(c, v, self.physics.cage, cage, w["cage"], w["drag"])
         mu, slip_scale = self.physics.pocket
         if mu > 0.0:
-            balls = kernels.BallStates(c, v, np.take(omega, self.balls, axis=1))
+            balls = kernels.BallStates(c, v, np.take(omega, self.balls, axis=1), self._no_rotation(bsz))
             kernels.pocket_friction(w["cage"], balls, cage, con.bearing.ball_radius, mu, slip_scale, w["friction"],
                                     w["point"])
         n = con.n_nodes

@@ -89,6 +89,11 @@ class BearingConnector:
         kg m²). Its axial torque is I (dw/dt + (w_ref - w)/tau), tau = 1 ms: the
         feed-forward makes the race follow the prescribed speed, the weak feedback removes
         integration drift.
+    surface : contact.surface.SurfaceModel, optional
+        Defects and waviness (MODEL.md §13); None: perfect surfaces.
+    ball_circles : ndarray (Z, 2, 3), optional
+        Per ball, the zero direction and spin axis (ball body frame) of the circle a ball
+        defect's ``angle_deg`` is measured on (:func:`contact.surface.ball_circles`, the default).
     """
 
     speed_tracking_time = 1e-3  #: tau of the driven-speed feedback, s
@@ -98,10 +103,11 @@ class BearingConnector:
     def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
                  drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
                  race_frames: dict, applied_force, held: dict, driven: dict | None = None,
-                 surface: SurfaceModel | None = None):
+                 surface: SurfaceModel | None = None, ball_circles=None):
         self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
         self.surface = surface if surface is not None and surface.active else None
-        self.terms = term_record(law, lubricant, bearing.ball_diameter, surface_record(self.surface, bearing))
+        self.terms = term_record(law, lubricant, bearing.ball_diameter,
+                                 surface_record(self.surface, bearing, ball_circles))
         self.races, self.layout = races, layout
         self.origin = np.asarray(frame_origin, dtype=float)
         self.rotation = np.asarray(frame_rotation, dtype=float)
@@ -419,8 +425,12 @@ class BearingConnector:
         kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
         if self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
+            pits = {}
+            if self.terms.surface.material:  # a ball defect: where each ball's material is (eq. 13.3)
+                pits = dict(ball_rotation=np.concatenate([rot[:, balls]] * 2, axis=1).reshape(-1, 3, 3),
+                            ball_omega=both(w), race_axis=stacked(1, (3, 3))[:, :, 2], race_omega=stacked(3, (3,)))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
-                                   self.bearing.ball_diameter, self.bearing.pitch_diameter)
+                                   self.bearing.ball_diameter, self.bearing.pitch_diameter, **pits)
         frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)

@@ -122,13 +122,16 @@ def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
     """The longest step that puts ``steps_per_passage`` steps into the shortest defect passage of
     ``surface`` (MODEL.md §13c): a defect of length L on a race passes under a contact moving at
     |ω_c − ω_race| ρ over it (ρ = d_m/2 ∓ r cos α, the pure-rolling cage speed ω_c), so
-    h = L / (steps_per_passage |ω_c − ω_race| ρ); inf without defects."""
+    h = L / (steps_per_passage |ω_c − ω_race| ρ); a pit on a ball passes at the ball's surface
+    speed, which rolling makes the races' (the faster of the two); inf without defects."""
     w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
     w_c = bearing.cage_speed(w_i, w_o)
     step = math.inf
     for d in surface.defects:
-        rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, d.race)
-        speed = abs(w_c - (w_i if d.race == "inner" else w_o)) * rho
+        speed = 0.0
+        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
+            rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
+            speed = max(speed, abs(w_c - (w_i if race == "inner" else w_o)) * rho)
         if speed > 0.0:
             step = min(step, d.length / (steps_per_passage * speed))
     return step

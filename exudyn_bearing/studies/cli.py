@@ -157,9 +157,11 @@ def _vibration(args) -> int:
           f"axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, {args.time:g} s at "
           f"{args.sample_rate:g} Hz (the first {args.settle:g} s left out)")
     for i, d in enumerate(surf.defects):
-        reach = d.reach(b.curvature_radii(b.contact_angle, d.race)[0])  # R_x at the nominal angle
+        # R_x at the nominal angle (a ball's pit meets the outer race first)
+        reach = d.reach(b.curvature_radii(b.contact_angle, "outer" if d.race == "ball" else d.race)[0])
         note = "" if reach >= d.depth else f"; a ball reaches {reach * 1e6:.2f} um of its {d.depth * 1e6:g} um depth"
-        print(f"  defect {i}: {d.race} race at {d.angle_deg:g} deg, {d.length * 1e3:g} mm long{note}")
+        where = f"ball {d.ball} at {d.angle_deg:g} deg" if d.race == "ball" else f"{d.race} race at {d.angle_deg:g} deg"
+        print(f"  defect {i}: {where}, {d.length * 1e3:g} mm long{note}")
     if surf.waviness.active:
         print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}")
     print(f"  kinematic cage slip {result.kinematic_cage_slip_percent:.3f} %")

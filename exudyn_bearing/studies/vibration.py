@@ -122,12 +122,15 @@ def defect_events(results, bearing: Bearing, surface) -> list:
 
     The contact's azimuth in the race frame is the ball's azimuth minus the race's turned angle
     (the time integral of its recorded speed); edge crossings are interpolated between
-    recorded states."""
+    recorded states. A pit on a ball has no events here (the results do not record the
+    balls' orientations)."""
     t = np.asarray(results.time)
     psi = np.unwrap(results.ball_position_angle, axis=0)
     turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
     events = []
     for i, d in enumerate(surface.defects):
+        if d.race == "ball":
+            continue
         rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, d.race)
         half = 0.5 * d.length / rho  # the defect's half angle on the contact path
         for j in range(psi.shape[1]):
