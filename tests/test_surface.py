@@ -7,7 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from contact.surface import Defect, SurfaceModel, Waviness, race_heights, surface_record
+from contact.kinematics import rotation_matrices
+from contact.surface import Defect, SurfaceModel, Waviness, ball_heights, race_heights, surface_record
 from exudyn_bearing import REFERENCE_BEARING
 from exudyn_bearing.bearingfile import BearingFile, dumps_bearing, loads_bearing
 
@@ -136,6 +137,43 @@ def test_long_spall_reaches_its_depth_and_its_edge_ramps():
     want = np.where(np.abs(x) < 0.5 * length, -np.minimum.reduce([np.full_like(x, depth), depth * u / edge, circle]), 0)
     np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
     assert h.min() == -depth
+
+
+def _pit_heights(pit, angle, spin, across=0.0, r_x=R):
+    """(h, dh/dt) of ``pit`` on ball 0 (its start circle: zero e_x, spin axis e_z, the default)
+    at a contact with n = e_x, t1 = e_y, t2 = e_z, the ball turned by ``angle`` (rad, (n,))
+    about e_z and then by ``across`` about -e_y, spinning at ``spin`` rad/s about e_z."""
+    record = surface_record(SurfaceModel((pit,)), B)
+    n = np.size(angle)
+    rot = rotation_matrices(np.stack([np.zeros(n), np.zeros(n), np.asarray(angle)], axis=1))
+    rot = rotation_matrices(np.array([[0.0, -across, 0.0]])) @ rot
+    e = np.broadcast_to(np.eye(3)[:, None, :], (3, n, 3))
+    return ball_heights(record, np.zeros(n, dtype=int), rot, e[0], e[1], e[2],
+                        np.broadcast_to([0.0, 0.0, spin], (n, 3)), R, np.full(n, r_x))
+
+
+def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_crosses():
+    """A round pit of 1 mm on a ball (eq. 13.3): on its diameter the contact's drop is eq. 13.2
+    with L = 1 mm and R_x; 0.3 mm off it, the chord 2 sqrt(0.5² - 0.3²) mm = 0.8 mm takes L's
+    place; nothing on the ball's far side; dh/dt is the height's time derivative at the spin."""
+    diameter, r_x, spin = 1e-3, 0.9 * R, 300.0
+    pit = Defect("ball", 0.0, diameter, 0.28e-3, ball=0)
+    x = np.linspace(-0.6e-3, 0.6e-3, 601)  # arc position of the pit's centre from the contact
+    for across, chord in ((0.0, diameter), (0.3e-3, 0.8e-3)):
+        h, rate = _pit_heights(pit, x / R, spin, across / R, r_x)
+        along = R * np.arctan2(np.sin(x / R), math.cos(across / R) * np.cos(x / R))  # the arc seen from the contact
+        u = np.clip(0.5 * chord - np.abs(along), 0.0, None)
+        want = np.where(np.abs(along) < 0.5 * chord, -(r_x - np.sqrt(r_x * r_x - u * u)), 0.0)
+        np.testing.assert_allclose(h, want, rtol=0, atol=1e-14)
+        smooth = (np.abs(x) < 0.5 * chord - 4e-6) & (np.abs(x) > 4e-6)
+        numeric = np.gradient(h, x / R / spin)  # the ball turns by spin dt
+        np.testing.assert_allclose(rate[smooth], numeric[smooth], rtol=2e-2, atol=0)
+    far, _ = _pit_heights(pit, np.array([math.pi]), spin)
+    assert far[0] == 0.0
+    # angle_deg turns the pit about the start spin axis: 90 deg ahead, met after the ball turns back by 90 deg
+    turned, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0), np.array([-math.pi / 2, 0.0]), spin)
+    assert turned[0] == pytest.approx(-min(5e-6, r_x - math.sqrt(r_x ** 2 - (0.5 * diameter) ** 2)), rel=1e-6)
+    assert turned[1] == 0.0
 
 
 def test_defect_across_the_raceway_and_turning_with_its_race():

@@ -190,6 +190,28 @@ def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
     assert abs(bpfi - r.fault_frequencies["kinematic"]["BPFI"]) < 0.01 * bpfi
 
 
+def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
+    """The CWRU ball fault (a 0.18-mm pit, 0.28 mm deep) on a ball of the 6205 at 300 N radial,
+    1797 rpm (eq. 13.3). At 0 deg the ball's inner and outer contacts trace one circle on it, so
+    the pit meets a race twice per turn of the ball relative to the cage, and the ball carries
+    it through the load zone once per cage turn: the strongest envelope line above 50 Hz is
+    2 BSF (the published 4.7135 x the shaft speed, and twice the run's own ball spin), with
+    2 BSF +- FTF and the modulation FTF itself among the strongest; BSF is weaker than 2 BSF."""
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.25, sample_rate=10000.0,
+                  surface=SurfaceModel((Defect("ball", 0.0, 0.18e-3, 0.28e-3, ball=0),)))
+    actual = r.fault_frequencies["actual"]
+    two_bsf, ftf = 2 * actual["BSF"], actual["FTF"]
+    strongest, amp = max((p for p in r.envelope_peaks if p[0] > 50.0), key=lambda p: p[1])
+    assert abs(strongest - 4.7135 * 1797 / 60) < 1.0 and abs(strongest - two_bsf) < 1.0, r.envelope_peaks
+    lines = [f for f, _ in r.envelope_peaks[:6]]
+    for want in (two_bsf - ftf, two_bsf + ftf, ftf):
+        assert min(abs(f - want) for f in lines) < 1.0, (want, lines)
+    near_bsf = [a for f, a in r.envelope_peaks if abs(f - actual["BSF"]) < 1.0]
+    assert not near_bsf or max(near_bsf) < 0.8 * amp
+
+
 def test_notch_passage_follows_its_geometry():
     """A 1.5-mm notch, 20 um deep, on the outer race of the 6205 at 300 N radial, 5-us steps.
     The passage of the ball under the load (``defect_events``) lasts L / ((d_m/2 + r) w_c);
