@@ -29,7 +29,8 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
   atan2(d·t2, d·n)) from the contact, d its direction from the ball centre; the contact path
   crosses it on a chord ℓ = 2 √((L/2)² − across²), over which eq. 13.2 holds with ℓ for L
   (eq. 13.3, :func:`ball_height`). The pit meets a race once per turn of the ball relative to
-  the contact: the two races together at twice the ball-spin frequency.
+  the contact: where both contacts trace its circle (0° contact angle), the two races
+  together at twice the ball-spin frequency.
 """
 from __future__ import annotations
 
@@ -66,7 +67,7 @@ def sag(u: float, radius: float) -> float:
 
 @dataclass(frozen=True)
 class Defect:
-    """A local defect (spall, EDM notch) on a race (MODEL.md eq. 13.2).
+    """A local defect (spall, EDM notch) on a race, or a pit on a ball (MODEL.md eq. 13.2, 13.3).
 
     Parameters
     ----------
