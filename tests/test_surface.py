@@ -234,3 +234,62 @@ def test_a_defect_no_ball_touches_leaves_every_force_bit_for_bit():
         from tests.test_compiled import _both_paths
 
         np.testing.assert_array_equal(_both_paths(con0, q, qt)[path], _both_paths(con1, q, qt)[path])
+
+
+def test_surface_start_an_oversize_ball_carries_the_rigid_ring_load_distribution():
+    """A ball 2 um oversize among 16 under 1300 N axial at 10 rpm (no centrifugal force): the
+    builder's surface start (MODEL.md §13d) moves the balls and the free inner race so that at
+    t = 0 each ball carries what the rigid-ring load distribution gives (Harris): approach
+    along the contact line z sin a + (x cos psi + y sin psi) cos a + dD_j, Q = K delta^1.5 with
+    the series stiffness K of the two contacts, in axial and radial balance (within 0.1 %)."""
+    exu = pytest.importorskip("exudyn")
+    from scipy.optimize import fsolve
+
+    from exudyn_bearing import CreateAngularContactBearing, races
+
+    z, force, excess = B.balls, 1300.0, np.zeros(B.balls)
+    excess[3] = 2e-6
+    mbs = exu.SystemContainer().AddSystem()
+    h = CreateAngularContactBearing(mbs, B, innerRace=races.Driven(10), axialForce=force, show=False,
+                                    surface=SurfaceModel(waviness=Waviness(ball_diameter_variation=tuple(excess))))
+    assert h.connector.surface_start["converged"]
+    q = np.concatenate([mbs.GetNodeParameter(n, "initialCoordinates") for n in h.nodeNumbers])
+    qt = np.concatenate([mbs.GetNodeParameter(n, "initialVelocities") for n in h.nodeNumbers])
+    st = h.connector.evaluate(0.0, h.connector.reference + q, qt, details=True)
+    a = float(np.mean(st.inner.contact_angle))
+    k = (B.hertz(a, "inner").stiffness ** (-2 / 3) + B.hertz(a, "outer").stiffness ** (-2 / 3)) ** -1.5
+    psi = 2 * np.pi * np.arange(z) / z
+
+    def loads(u):
+        approach = u[2] * math.sin(a) + (u[0] * np.cos(psi) + u[1] * np.sin(psi)) * math.cos(a) + excess
+        return k * np.maximum(approach, 0.0) ** 1.5
+
+    def balance(u):
+        q_ = loads(1e-6 * u)
+        return [np.sum(q_ * np.cos(psi)), np.sum(q_ * np.sin(psi)), np.sum(q_) * math.sin(a) - force]
+
+    want = loads(1e-6 * fsolve(balance, [0.0, 0.0, 10.0]))
+    assert want[3] > 1.8 * want[0]
+    np.testing.assert_allclose(st.inner_forces.normal_load, want, rtol=1e-3)
+    np.testing.assert_allclose(st.outer_forces.normal_load, want, rtol=1e-3)
+
+
+def test_surface_start_is_settled_from_the_first_step():
+    """The same oversize ball at 1800 rpm: over the first 2 ms its load stays within 2 % of
+    what the oversize adds to it (the start carries the surface; without the surface start
+    the ball would start with 2 um more approach on both contacts and ring)."""
+    exu = pytest.importorskip("exudyn")
+    from exudyn_bearing import CreateAngularContactBearing, races
+    from exudyn_bearing.simulation.runner import SolverSettings, run_solver
+
+    excess = np.zeros(B.balls)
+    excess[3] = 2e-6
+    mbs = exu.SystemContainer().AddSystem()
+    h = CreateAngularContactBearing(mbs, B, innerRace=races.Driven(1800), axialForce=1300.0, show=False,
+                                    surface=SurfaceModel(waviness=Waviness(ball_diameter_variation=tuple(excess))))
+    mbs.Assemble()
+    run_solver(mbs, [h], 0.002, SolverSettings(output_step=1e-5, progress=False))
+    load = h.Results(mbs).outer["load"]
+    added = load[0, 3] - load[0, 0]
+    assert added > 15.0
+    assert np.max(np.abs(load[:, 3] - load[0, 3])) < 0.02 * added

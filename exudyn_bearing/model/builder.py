@@ -18,6 +18,7 @@ Example (importing the package registers ``mbs.CreateAngularContactBearing`` on 
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
@@ -33,6 +34,7 @@ from ..solvers.quasidynamic import AzimuthStates
 from ..solvers.quasistatic import solve_load_distribution
 from ..solvers.raceway import choose_inner_control, jones_axis_start, raceway_control
 from ..solvers.start import steady_start
+from ..solvers.surface_start import surface_start
 from .connector import BearingConnector, CageModel
 from .handle import SENSOR_LABELS, SENSOR_OUTPUTS, BearingHandle  # noqa: F401 (re-exported)
 from .predictor import install_predictor
@@ -51,6 +53,31 @@ def _ball_circles(frame, outer_contact, e_z, omega, orbit):
         axis = spin / np.linalg.norm(spin) if np.linalg.norm(spin) > 1e-9 else e_z
         out[j] = frame @ (outer_contact[j] / np.linalg.norm(outer_contact[j])), frame @ axis
     return out
+
+
+def _settle_surfaces(mbs, connector, nodes, layout, inner, held):
+    """Moves the balls (and an inner race the builder made, free in translation) so that the
+    surfaces at t = 0 carry the perfect start's forces (:func:`surface_start`); the outcome is
+    ``connector.surface_start``, and a start that does not converge warns and keeps the
+    perfect bearing's state."""
+    init = [np.asarray(mbs.GetNodeParameter(n, "initialCoordinates"), dtype=float) for n in nodes]
+    vel = [np.asarray(mbs.GetNodeParameter(n, "initialVelocities"), dtype=float) for n in nodes]
+    q = connector.reference + np.concatenate(init)
+    axis = connector.axis
+    moves = []
+    for slot in layout["balls"]:  # radially and axially: its place in its pocket is kept
+        radial = q[6 * slot:6 * slot + 3] - connector.origin
+        radial = radial - (radial @ axis) * axis
+        moves.append((slot, np.stack([radial / np.linalg.norm(radial), axis])))
+    s = layout["inner"]
+    if s is not None and inner.kind in ("driven", "free") and held.get(s) != "all":
+        moves.append((s, np.eye(3)))
+    moved, info = surface_start(connector, q, np.concatenate(vel), moves)
+    for slot, _ in moves:
+        mbs.SetNodeParameter(nodes[slot], "initialCoordinates", (moved - connector.reference)[6 * slot:6 * slot + 6].tolist())
+    connector.surface_start = info
+    if not info["converged"]:
+        warnings.warn(info["message"], stacklevel=3)
 
 
 def _check_frame(position, rotation):
@@ -391,6 +418,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
                                  ball_circles=_ball_circles(frame, p_out - c_loc, e_z, omega_loc, w_c))
     connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
                                           for n in nodes])
+    if connector.surface is not None:  # the start carries the surfaces at t = 0 (MODEL.md §13d)
+        _settle_surfaces(mbs, connector, nodes, layout, inner, held)
     ref = connector.reference
 
     def force_user_function(mbs_, t, itemNumber, q, q_t):

@@ -15,7 +15,7 @@ from contact import cage as cage_physics
 from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces, with_surface
 from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
-from contact.surface import SurfaceModel, surface_record
+from contact.surface import NO_SURFACE, SurfaceModel, surface_record
 from contact.terms import term_record
 from ..bearing import BallDrag, Bearing
 from ..cage import CageModel
@@ -106,6 +106,8 @@ class BearingConnector:
                  surface: SurfaceModel | None = None, ball_circles=None):
         self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
         self.surface = surface if surface is not None and surface.active else None
+        #: what the builder's surface start did (:class:`exudyn_bearing.solvers.surface_start.SurfaceStart`)
+        self.surface_start = None
         self.terms = term_record(law, lubricant, bearing.ball_diameter,
                                  surface_record(self.surface, bearing, ball_circles))
         self.races, self.layout = races, layout
@@ -226,6 +228,25 @@ class BearingConnector:
             if status == 0:
                 return out.copy()
         return self.evaluate(t, np.asarray(q) + self.reference, q_t)
+
+    def numpy_forces(self, t, q, q_t, surface=True):
+        """Generalized forces (B, 6 n_nodes) of B states (absolute coordinates and velocities,
+        (B, 6 n_nodes)) through the numpy path, with the surfaces or, ``surface=False``,
+        without them (the surface start, :mod:`exudyn_bearing.solvers.surface_start`)."""
+        q, q_t = np.atleast_2d(q), np.atleast_2d(q_t)
+        b, n = q.shape[0], self.n_nodes
+        qq, vv = q.reshape(b, n, 6), q_t.reshape(b, n, 6)
+        rot = self._rotations(np.ascontiguousarray(qq[:, :, 3:].reshape(-1, 3))).reshape(b, n, 3, 3)
+        omega = np.einsum("bnij,bnj->bni", rot, vv[:, :, 3:])
+        kept = self.surface, self.terms
+        if not surface:
+            self.surface, self.terms = None, self.terms._replace(surface=NO_SURFACE)
+        try:
+            out, react, _, _, _ = self._batch_forces(t, np.ascontiguousarray(qq[:, :, :3]), rot,
+                                                     np.ascontiguousarray(vv[:, :, :3]), omega, details=True)
+        finally:
+            self.surface, self.terms = kept
+        return (out + react.sum(axis=1)).reshape(b, -1)
 
     def forces(self, t, pos, rot, vel, omega_local, details=False):
         """Generalized forces from decoded node states (see :meth:`decode`): the force

@@ -164,6 +164,8 @@ def _vibration(args) -> int:
         print(f"  defect {i}: {where}, {d.length * 1e3:g} mm long{note}")
     if surf.waviness.active:
         print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}")
+    if result.solver.get("surface_start"):
+        print(f"  {result.solver['surface_start']} (MODEL.md §13d)")
     print(f"  kinematic cage slip {result.kinematic_cage_slip_percent:.3f} %")
     print(f"  fault frequencies: nominal (catalogue formula, nominal contact angle), kinematic (pure rolling at the "
           f"run's contact geometry), actual (the run's cage and ball speeds)")

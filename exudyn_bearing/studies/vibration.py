@@ -278,7 +278,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
                           float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results,
                           {"step_s": step, "steps": int(info.steps), "step_cuts": int(info.steps) - int(round(time / step)),
-                           "newton_iterations": int(info.newton_iterations)})
+                           "newton_iterations": int(info.newton_iterations),
+                           "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
         finer = vibration(bearing, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, surface=surface,
