@@ -24,6 +24,9 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
   edge and is re-stressed at the exit edge; over a notch shorter than 2√(d (2 R_x − d)) it
   never reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal
   stays the groove's (the edge's own normal is not modelled).
+* **Ball waviness**: h = Σ A_k cos(k φ + φ_k), φ the contact's longitude on the ball about its
+  start spin axis (eq. 13.6): an even order changes the ball's diameter between its two
+  (opposite) contacts, an odd one only shifts it.
 * **Ball defect**: a round pit of diameter L on a ball, fixed in the ball's material. At each
   of its two contacts the pit's centre sits at (along, across) = r (atan2(d·t1, d·n),
   atan2(d·t2, d·n)) from the contact, d its direction from the ball centre; the contact path
@@ -160,11 +163,16 @@ class Waviness:
         amplitude A > 0 (m).
     ball_diameter_variation : sequence of float
         ΔD of each ball, m (> 0: oversize), one per ball; empty: none.
+    ball : sequence of (ball, order, amplitude_m, phase_deg)
+        Waviness of a ball (eq. 13.6): h = Σ A cos(k φ + φ_k), φ the contact's longitude about
+        the ball's start spin axis relative to the cage, from its start outer contact (the
+        circle of a ball defect's ``angle_deg``); ball index 0 .. Z - 1, order k >= 2.
     """
 
     inner: tuple = ()
     outer: tuple = ()
     ball_diameter_variation: tuple = ()
+    ball: tuple = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "inner", _waviness_rows("waviness.inner", self.inner))
@@ -172,10 +180,19 @@ class Waviness:
         variation = tuple(_number("waviness.ball_diameter_variation", v, positive=False)
                           for v in self.ball_diameter_variation)
         object.__setattr__(self, "ball_diameter_variation", variation)
+        rows = []
+        for row in self.ball:
+            if len(row) != 4:
+                raise ValueError(f"waviness.ball: each entry is [ball, order, amplitude_m, phase_deg], got {row!r}")
+            index = row[0]
+            if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or index < 0:
+                raise ValueError(f"waviness.ball: the ball index must be an integer >= 0, got {index!r}")
+            rows.append((int(index),) + _waviness_rows("waviness.ball", (row[1:],))[0])
+        object.__setattr__(self, "ball", tuple(rows))
 
     @property
     def active(self) -> bool:
-        return bool(self.inner or self.outer or any(self.ball_diameter_variation))
+        return bool(self.inner or self.outer or any(self.ball_diameter_variation) or self.ball)
 
 
 @dataclass(frozen=True)
@@ -212,15 +229,18 @@ class SurfaceRecord(NamedTuple):
     #: (n, 7): ball, unit direction of the pit's centre in the ball's body frame (3), diameter m,
     #: depth m, edge m (eq. 13.3)
     ball_defects: np.ndarray = np.zeros((0, 7))
+    #: (n, 10): ball, order, amplitude m, phase rad, zero direction (3) and spin axis (3) of its
+    #: circle in the ball's body frame (eq. 13.6)
+    ball_waviness: np.ndarray = np.zeros((0, 10))
 
     @property
     def material(self) -> bool:
-        """Whether a force depends on where a ball's material is (a ball defect): the ball's
-        orientation enters the contacts (and the Jacobian's rotation columns)."""
-        return self.ball_defects.shape[0] > 0
+        """Whether a force depends on where a ball's material is (a ball defect or waviness):
+        the ball's orientation enters the contacts (and the Jacobian's rotation columns)."""
+        return self.ball_defects.shape[0] + self.ball_waviness.shape[0] > 0
 
 
-NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 8)), np.zeros(0), 0.0, np.zeros((0, 7)))
+NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 8)), np.zeros(0), 0.0, np.zeros((0, 7)), np.zeros((0, 10)))
 
 
 def ball_circles(bearing) -> np.ndarray:
@@ -285,8 +305,16 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
         excess = 0.5 * np.asarray(w.ball_diameter_variation, dtype=float)
         if np.any(excess <= -0.5 * diam):
             raise ValueError("waviness.ball_diameter_variation: a ball would have no diameter")
+    ball_waves = []
+    for j, order, amp, phase in w.ball:
+        if j >= bearing.balls:
+            raise ValueError(f"waviness.ball: {j} is not a ball of this bearing (0 .. {bearing.balls - 1})")
+        zero, axis = np.asarray(ball_circles(bearing) if circles is None else circles, dtype=float)[j]
+        ball_waves.append((j, order, amp, math.radians(phase), *(zero / np.linalg.norm(zero)),
+                           *(axis / np.linalg.norm(axis))))
     return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 8),
-                         excess, alpha, np.array(pits, dtype=float).reshape(-1, 7))
+                         excess, alpha, np.array(pits, dtype=float).reshape(-1, 7),
+                         np.array(ball_waves, dtype=float).reshape(-1, 10))
 
 
 @njit(cache=True, error_model="numpy")
@@ -349,7 +377,8 @@ def path_drop(x, length, depth, edge, rolling_radius):
 
 @njit(cache=True, error_model="numpy")
 def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius):
-    """(h m, dh/dt m/s) of the defects of ``ball`` at one of its contacts (eq. 13.3):
+    """(h m, dh/dt m/s) of the pits (eq. 13.3) and the waviness (eq. 13.6) of ``ball`` at one of
+    its contacts:
     ``rotation`` the ball's body-to-global rotation (3, 3); the contact's ``normal`` n,
     ``rolling`` t1 and ``transverse`` t2 (global unit vectors, (3,)); ``relative_omega`` the
     ball's angular velocity relative to the contact frame, which turns with the ball's orbit
@@ -384,6 +413,32 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
         c_t = ddx * normal[0] + ddy * normal[1] + ddz * normal[2]
         h -= drop
         rate -= slope * ball_radius * (a_t * c - a * c_t) / (a * a + c * c)
+    waves = surface.ball_waviness
+    if waves.shape[0] == 0:
+        return h, rate
+    # the contact direction in the ball's body frame, n_b = Aᵀ n, and its rate -Aᵀ (w_rel x n)
+    wx, wy, wz = relative_omega[0], relative_omega[1], relative_omega[2]
+    mx = wy * normal[2] - wz * normal[1]
+    my = wz * normal[0] - wx * normal[2]
+    mz = wx * normal[1] - wy * normal[0]
+    nb = np.empty(3)
+    nd = np.empty(3)
+    for r in range(3):
+        nb[r] = rotation[0, r] * normal[0] + rotation[1, r] * normal[1] + rotation[2, r] * normal[2]
+        nd[r] = -(rotation[0, r] * mx + rotation[1, r] * my + rotation[2, r] * mz)
+    for i in range(waves.shape[0]):
+        if int(waves[i, 0]) != ball:
+            continue
+        z0, z1, z2 = waves[i, 4], waves[i, 5], waves[i, 6]
+        a0, a1, a2 = waves[i, 7], waves[i, 8], waves[i, 9]
+        y0, y1, y2 = a1 * z2 - a2 * z1, a2 * z0 - a0 * z2, a0 * z1 - a1 * z0  # axis x zero
+        x = nb[0] * z0 + nb[1] * z1 + nb[2] * z2
+        y = nb[0] * y0 + nb[1] * y1 + nb[2] * y2
+        x_t = nd[0] * z0 + nd[1] * z1 + nd[2] * z2
+        y_t = nd[0] * y0 + nd[1] * y1 + nd[2] * y2
+        arg = waves[i, 1] * math.atan2(y, x) + waves[i, 3]
+        h += waves[i, 2] * math.cos(arg)
+        rate -= waves[i, 2] * waves[i, 1] * math.sin(arg) * (x * y_t - y * x_t) / (x * x + y * y)
     return h, rate
 
 

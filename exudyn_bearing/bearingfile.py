@@ -52,6 +52,7 @@ Example::
     outer = [[17, 0.2e-6, 0.0]]
     inner = []
     ball_diameter_variation = []     # m per ball (> 0 oversize)
+    ball = [[0, 6, 0.1e-6, 0.0]]     # [ball, order, amplitude_m, phase_deg]: a ball's waviness
 
 A function that takes a ``bearing`` takes a bearing file too — the :class:`BearingFile`
 or its path — and then every part the file gives (lubricant, drag, cage, contact law)
@@ -266,12 +267,13 @@ def _surface(data: dict) -> SurfaceModel:
         unknown = set(table) - {f.name for f in fields(Waviness)}
         if unknown:
             raise ValueError(f"unknown key(s) in [waviness]: {', '.join(sorted(unknown))} "
-                             "(allowed: ball_diameter_variation, inner, outer)")
+                             "(allowed: ball, ball_diameter_variation, inner, outer)")
         for key, value in table.items():
             if not isinstance(value, list):
                 raise ValueError(f"waviness.{key} must be a list, got {value!r}")
             if key != "ball_diameter_variation" and not all(isinstance(row, list) for row in value):
-                raise ValueError(f"waviness.{key}: each entry is [order, amplitude_m, phase_deg], got {value!r}")
+                entry = "[ball, order, amplitude_m, phase_deg]" if key == "ball" else "[order, amplitude_m, phase_deg]"
+                raise ValueError(f"waviness.{key}: each entry is {entry}, got {value!r}")
         waviness = Waviness(**{k: tuple(tuple(r) if isinstance(r, list) else r for r in v) for k, v in table.items()})
     return SurfaceModel(tuple(records), waviness)
 
@@ -283,8 +285,10 @@ def _surface_text(surface: SurfaceModel) -> str:
     w = surface.waviness
     if w != Waviness():
         rows = {k: "[" + ", ".join(f"[{o}, {a!r}, {p!r}]" for o, a, p in getattr(w, k)) + "]" for k in ("inner", "outer")}
+        balls = "[" + ", ".join(f"[{j}, {o}, {a!r}, {p!r}]" for j, o, a, p in w.ball) + "]"
         text += (f"\n[waviness]\ninner = {rows['inner']}\nouter = {rows['outer']}\n"
-                 f"ball_diameter_variation = [{', '.join(repr(v) for v in w.ball_diameter_variation)}]\n")
+                 f"ball_diameter_variation = [{', '.join(repr(v) for v in w.ball_diameter_variation)}]\n"
+                 f"ball = {balls}\n")
     return text
 
 

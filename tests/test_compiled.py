@@ -144,10 +144,11 @@ SCENES = {
         (Defect("outer", 0.0, 1.0e-3, 5e-6), Defect("inner", 90.0, 2e-3, 20e-6, edge=0.2e-3)),
         Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
                  ball_diameter_variation=(1e-6,) + (0.0,) * 15))),
-    # MODEL.md eq. 13.3: pits under the outer contacts of balls 0 and 3, the contacts on their
-    # edge paths: the contacts read the balls' rotations
+    # MODEL.md eq. 13.3, 13.6: pits under the outer contacts of balls 0 and 3, the contacts on
+    # their edge paths, and two balls' waviness: the contacts read the balls' rotations
     "ball defects, combined load": dict(axialForce=2200.0, radialForce=2000.0, surface=SurfaceModel(
-        (Defect("ball", -0.5, 1.0e-3, 5e-6, ball=0), Defect("ball", -2.0, 1.2e-3, 8e-6, ball=3, edge=0.1e-3)))),
+        (Defect("ball", -0.5, 1.0e-3, 5e-6, ball=0), Defect("ball", -2.0, 1.2e-3, 8e-6, ball=3, edge=0.1e-3)),
+        Waviness(ball=((0, 6, 0.3e-6, 10.0), (4, 3, 0.2e-6, 0.0))))),
     # driven-speed torque (feed-forward of the ramp + feedback) and an inner-land cage
     "speed ramp, inner-guided cage, turning outer race": dict(
         innerRace=races.Driven(lambda t: 900.0 + 30000.0 * t), outerRace=races.Fixed(lambda t: -100.0 * t),

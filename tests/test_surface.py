@@ -32,6 +32,9 @@ R = B.ball_radius
     (lambda: Waviness(inner=((5, -1e-6, 0.0),)), "waviness.inner: amplitude"),
     (lambda: Waviness(outer=((5.5, 1e-6, 0.0),)), "waviness.outer"),
     (lambda: Waviness(outer=((5, 1e-6),)), "waviness.outer"),
+    (lambda: Waviness(ball=((5, 1e-6, 0.0),)), "waviness.ball"),
+    (lambda: Waviness(ball=((-1, 6, 1e-6, 0.0),)), "waviness.ball"),
+    (lambda: Waviness(ball=((0, 1, 1e-6, 0.0),)), "waviness.ball"),
 ])
 def test_bad_surfaces_name_their_key(make, key):
     with pytest.raises(ValueError, match=key.replace(".", r"\.")):
@@ -66,7 +69,8 @@ SURFACE = SurfaceModel((Defect("outer", 10.0, 0.5e-3, 0.28e-3, width=2e-3, offse
                         Defect("inner", -45.0, 2e-3, 20e-6, edge=0.3e-3),
                         Defect("ball", 30.0, 0.5e-3, 10e-6, ball=3)),
                        Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
-                                ball_diameter_variation=(2e-6,) + (0.0,) * (B.balls - 1)))
+                                ball_diameter_variation=(2e-6,) + (0.0,) * (B.balls - 1),
+                                ball=((0, 6, 0.1e-6, 0.0), (5, 7, 0.2e-6, 90.0))))
 
 
 def test_bearing_file_round_trips_its_surfaces():
@@ -140,10 +144,11 @@ def test_long_spall_reaches_its_depth_and_its_edge_ramps():
 
 
 def _pit_heights(pit, angle, spin, across=0.0, r_x=R):
-    """(h, dh/dt) of ``pit`` on ball 0 (its start circle: zero e_x, spin axis e_z, the default)
-    at a contact with n = e_x, t1 = e_y, t2 = e_z, the ball turned by ``angle`` (rad, (n,))
-    about e_z and then by ``across`` about -e_y, spinning at ``spin`` rad/s about e_z."""
-    record = surface_record(SurfaceModel((pit,)), B)
+    """(h, dh/dt) of ``pit`` (a Defect, or a SurfaceModel) on ball 0 (its start circle: zero
+    e_x, spin axis e_z, the default) at a contact with n = e_x, t1 = e_y, t2 = e_z, the ball
+    turned by ``angle`` (rad, (n,)) about e_z and then by ``across`` about -e_y, spinning at
+    ``spin`` rad/s about e_z."""
+    record = surface_record(pit if isinstance(pit, SurfaceModel) else SurfaceModel((pit,)), B)
     n = np.size(angle)
     rot = rotation_matrices(np.stack([np.zeros(n), np.zeros(n), np.asarray(angle)], axis=1))
     rot = rotation_matrices(np.array([[0.0, -across, 0.0]])) @ rot
@@ -174,6 +179,20 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
     turned, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0), np.array([-math.pi / 2, 0.0]), spin)
     assert turned[0] == pytest.approx(-min(5e-6, r_x - math.sqrt(r_x ** 2 - (0.5 * diameter) ** 2)), rel=1e-6)
     assert turned[1] == 0.0
+
+
+def test_ball_waviness_is_the_fourier_sum_over_the_contacts_longitude_on_the_ball():
+    """Waviness of ball 0 (eq. 13.6): with the ball turned by -phi about its spin axis, the
+    contact sits at longitude phi on it: h = sum A cos(k phi + phase); dh/dt is h's time
+    derivative at the spin; ball 1's waviness is not ball 0's."""
+    rows = ((0, 6, 0.3e-6, 20.0), (0, 3, 1e-6, -60.0), (1, 5, 2e-6, 0.0))
+    phi = np.linspace(-math.pi, math.pi, 721)
+    spin = 200.0
+    h, rate = _pit_heights(SurfaceModel(waviness=Waviness(ball=rows)), -phi, spin)
+    want = 0.3e-6 * np.cos(6 * phi + math.radians(20.0)) + 1e-6 * np.cos(3 * phi - math.radians(60.0))
+    np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
+    numeric = np.gradient(h, -phi / spin)  # the ball turns by spin dt: phi falls
+    np.testing.assert_allclose(rate[1:-1], numeric[1:-1], rtol=0, atol=2e-3 * np.max(np.abs(rate)))
 
 
 def test_defect_across_the_raceway_and_turning_with_its_race():
@@ -211,8 +230,10 @@ def test_oversize_ball_carries_more_in_both_force_paths():
     extra = np.zeros(B.balls)
     extra[3] = 2e-6
     pens = []
+    state = None
     for surface in (SurfaceModel(), SurfaceModel(waviness=Waviness(ball_diameter_variation=tuple(extra)))):
         _sc, con, q, qt = _state(surface=surface)
+        q, qt = state = state or (q, qt)  # the same state (the surface start moves ball 3 in its scene)
         con.residual_forces(0.01, q - con.reference, qt)
         pens.append(con._compiled.penetration.reshape(2, -1).copy())
         single, fast, ref = _both_paths(con, q, qt)

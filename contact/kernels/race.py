@@ -130,7 +130,7 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
-    if terms.surface.ball_defects.shape[0] > 0:  # a pit on the ball, where its material is (eq. 13.3)
+    if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # the ball's own surface (eq. 13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
         pit, pit_rate = ball_surface_height(
             terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
@@ -229,7 +229,7 @@ def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, tod
     # numba's parallel loop passes records of arrays field by field, not nested ones: the terms'
     # surface record travels as its arrays and is rebuilt per contact (no copy)
     heating, width = terms.heating, terms.rolling_width
-    waves, defects, excess, nominal, pits = terms.surface
+    waves, defects, excess, nominal, pits, ball_waves = terms.surface
     for n in prange(todo.shape[0]):
-        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal, pits))
+        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal, pits, ball_waves))
         _race_contact(todo[n], balls, frames, geometry, law, tables, one, out)

@@ -233,7 +233,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             v[0, j, i] = vel[0, balls[j], i]
             w[0, j, i] = omega[0, balls[j], i]
     force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
-    zr = z if terms.surface.ball_defects.shape[0] > 0 else 0  # a ball defect reads where the material is
+    zr = z if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0 else 0  # where the material is
     a = np.empty((1, zr, 3, 3))
     for j in range(zr):
         a[0, j] = rot[0, balls[j]]
