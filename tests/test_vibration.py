@@ -212,6 +212,32 @@ def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
     assert not near_bsf or max(near_bsf) < 0.8 * amp
 
 
+def test_ball_waviness_even_orders_vibrate_odd_orders_hardly():
+    """Waviness of order 6 on ball 0 and order 7 on ball 1 (0.1 um each), the 6205 at 300 N
+    axial, 1797 rpm (eq. 13.6). A ball's two contacts are opposite points of it, longitudes phi
+    and phi + pi about its spin axis, so the ball's diameter between them varies by
+    A [cos k phi + cos k (phi + pi)] = 2 A cos k phi for even k and not at all for odd k
+    (the ball only shifts): the ball's load, and the axial force, has a line at 6 BSF and
+    none at 7 BSF; the radial force, along the ball's orbiting azimuth, has 6 BSF +- FTF.
+    Measured: axial 6 BSF 41 dB above 7 BSF, radial 6 BSF +- FTF 16 dB above 7 BSF +- FTF."""
+    from exudyn_bearing.studies.vibration import amplitude_spectrum, vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, axial_force=300.0, time=0.15, sample_rate=10000.0,
+                  surface=SurfaceModel(waviness=Waviness(ball=((0, 6, 0.1e-6, 0.0), (1, 7, 0.1e-6, 0.0)))))
+    bsf, ftf = r.fault_frequencies["actual"]["BSF"], r.fault_frequencies["actual"]["FTF"]
+    keep = r.time >= 0.02
+
+    def line(component, want):
+        f, amp = amplitude_spectrum(r.acceleration[keep, component], r.sample_rate)
+        return amp[np.abs(f - want) < 4.0].max()
+
+    assert line(2, 6 * bsf) > 30 * line(2, 7 * bsf)
+    for radial in (0, 1):
+        even = max(line(radial, 6 * bsf - ftf), line(radial, 6 * bsf + ftf))
+        assert even > 4 * max(line(radial, 7 * bsf - ftf), line(radial, 7 * bsf + ftf))
+        assert even > 2 * line(radial, 6 * bsf)
+
+
 def test_notch_passage_follows_its_geometry():
     """A 1.5-mm notch, 20 um deep, on the outer race of the 6205 at 300 N radial, 5-us steps.
     The passage of the ball under the load (``defect_events``) lasts L / ((d_m/2 + r) w_c);
