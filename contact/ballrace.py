@@ -296,13 +296,15 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
     if law.rolling_resistance:
         moment = moment + rolling[:, None] * kin.transverse
+    if kin.surface_slope is not None:  # the tilted common normal, through the ball centre (eq. 13.7)
+        force = force - (load * kin.surface_slope)[:, None] * kin.rolling
     return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)
 
 
 def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch_diameter, ball_rotation=None,
                  ball_omega=None, race_axis=None, race_omega=None) -> ContactKinematics:
     """``kin`` with the surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md §13):
-    approach δ + h and its rate + dh/dt; ``race`` (0 inner, 1 outer) and ``ball`` index of
+    approach δ + h, its rate + dh/dt, and the slope dh/ds that tilts the force (eq. 13.7); ``race`` (0 inner, 1 outer) and ``ball`` index of
     each contact; D and d_m in m (the contacts' reduced radii R_x, §2). A ball defect
     (eq. 13.3) needs per contact the ball's ``ball_rotation`` (n, 3, 3) and ``ball_omega``
     (n, 3) rad/s, and the race's ``race_axis`` (n, 3) and ``race_omega`` (n, 3) rad/s."""
@@ -310,6 +312,7 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
     r_x = geometry.rolling_radius(ball_diameter, pitch_diameter, kin.contact_angle, 2.0 * race - 1.0)
     h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)
     rate = kin.penetration_rate + slope * kin.orbit_rate
+    tilt = slope / kin.point_radius
     if terms.surface.material:
         if ball_rotation is None:
             raise ValueError("with_surface: a ball defect needs ball_rotation, ball_omega, race_axis and race_omega")
@@ -318,4 +321,5 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
                            ball_omega - orbit[:, None] * race_axis, 0.5 * ball_diameter, r_x)
         h = h + pit[0]
         rate = rate + pit[1]
-    return replace(kin, penetration=kin.penetration + h, penetration_rate=rate)
+        tilt = tilt + np.where(pit[0] != 0.0, pit[2], 0.0)
+    return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt)

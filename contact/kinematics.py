@@ -75,6 +75,8 @@ class ContactKinematics:
     azimuth: np.ndarray = None
     #: the ball's orbital speed relative to the race, d(azimuth)/dt, rad/s
     orbit_rate: np.ndarray = None
+    #: slope dh/ds of the surfaces' height along t1 at the contact (MODEL.md eq. 13.7); None: flat
+    surface_slope: np.ndarray = None
 
 
 def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, race_rotation,

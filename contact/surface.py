@@ -23,7 +23,8 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
   ramp of length e: d min(1, x/e, (L − x)/e)). The ball unloads gradually past the entry
   edge and is re-stressed at the exit edge; over a notch shorter than 2√(d (2 R_x − d)) it
   never reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal
-  stays the groove's (the edge's own normal is not modelled).
+  tilts with the slope of the centre's path: the load acts along −(n + (dh/ds) t1), through
+  the ball centre (eq. 13.7; the kernels apply it, this module gives the slope).
 * **Ball waviness**: h = Σ A_k cos(k φ + φ_k), φ the contact's longitude on the ball about its
   start spin axis (eq. 13.6): an even order changes the ball's diameter between its two
   (opposite) contacts, an odd one only shifts it.
@@ -377,14 +378,16 @@ def path_drop(x, length, depth, edge, rolling_radius):
 
 @njit(cache=True, error_model="numpy")
 def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius):
-    """(h m, dh/dt m/s) of the pits (eq. 13.3) and the waviness (eq. 13.6) of ``ball`` at one of
-    its contacts:
+    """(h m, dh/dt m/s, dh/ds) of the pits (eq. 13.3) and the waviness (eq. 13.6) of ``ball`` at
+    one of its contacts, s the contact's position along t1 (the slope that tilts the contact
+    force, eq. 13.7):
     ``rotation`` the ball's body-to-global rotation (3, 3); the contact's ``normal`` n,
     ``rolling`` t1 and ``transverse`` t2 (global unit vectors, (3,)); ``relative_omega`` the
     ball's angular velocity relative to the contact frame, which turns with the ball's orbit
     (ω_ball − Ω_orbit e_axis, rad/s, (3,)); ``ball_radius`` r and R_x in m."""
     h = 0.0
     rate = 0.0
+    tilt = 0.0  # dh/ds, s the contact's position along t1 on the ball (eq. 13.7)
     pits = surface.ball_defects
     for i in range(pits.shape[0]):
         if int(pits[i, 0]) != ball:
@@ -413,9 +416,10 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
         c_t = ddx * normal[0] + ddy * normal[1] + ddz * normal[2]
         h -= drop
         rate -= slope * ball_radius * (a_t * c - a * c_t) / (a * a + c * c)
+        tilt += slope  # the pit's centre is at 'along' from the contact: d(along)/ds = -1
     waves = surface.ball_waviness
     if waves.shape[0] == 0:
-        return h, rate
+        return h, rate, tilt
     # the contact direction in the ball's body frame, n_b = Aᵀ n, and its rate -Aᵀ (w_rel x n)
     wx, wy, wz = relative_omega[0], relative_omega[1], relative_omega[2]
     mx = wy * normal[2] - wz * normal[1]
@@ -423,9 +427,11 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
     mz = wx * normal[1] - wy * normal[0]
     nb = np.empty(3)
     nd = np.empty(3)
+    ns = np.empty(3)  # d n_b / ds: the contact moved by ds along t1 over the ball
     for r in range(3):
         nb[r] = rotation[0, r] * normal[0] + rotation[1, r] * normal[1] + rotation[2, r] * normal[2]
         nd[r] = -(rotation[0, r] * mx + rotation[1, r] * my + rotation[2, r] * mz)
+        ns[r] = (rotation[0, r] * rolling[0] + rotation[1, r] * rolling[1] + rotation[2, r] * rolling[2]) / ball_radius
     for i in range(waves.shape[0]):
         if int(waves[i, 0]) != ball:
             continue
@@ -436,10 +442,13 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
         y = nb[0] * y0 + nb[1] * y1 + nb[2] * y2
         x_t = nd[0] * z0 + nd[1] * z1 + nd[2] * z2
         y_t = nd[0] * y0 + nd[1] * y1 + nd[2] * y2
+        x_s = ns[0] * z0 + ns[1] * z1 + ns[2] * z2
+        y_s = ns[0] * y0 + ns[1] * y1 + ns[2] * y2
         arg = waves[i, 1] * math.atan2(y, x) + waves[i, 3]
         h += waves[i, 2] * math.cos(arg)
         rate -= waves[i, 2] * waves[i, 1] * math.sin(arg) * (x * y_t - y * x_t) / (x * x + y * y)
-    return h, rate
+        tilt -= waves[i, 2] * waves[i, 1] * math.sin(arg) * (x * y_s - y * x_s) / (x * x + y * y)
+    return h, rate, tilt
 
 
 @njit(cache=True, error_model="numpy")
@@ -453,19 +462,19 @@ def _race_heights(surface, race, theta, contact_angle, point_radius, ball, rolli
 def _ball_heights(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius,
                   out):
     for i in range(ball.shape[0]):
-        out[0, i], out[1, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
+        out[0, i], out[1, i], out[2, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
                                            relative_omega[i], ball_radius, rolling_radius[i])
 
 
 def ball_heights(surface: SurfaceRecord, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                  rolling_radius) -> np.ndarray:
     """:func:`ball_height` for n contacts (the numpy path): ``ball`` (n,), ``rotation``
-    (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s), (2, n)."""
+    (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s, dh/ds), (3, n)."""
     def arr(x):
         return np.ascontiguousarray(x, dtype=float)
 
     ball = np.ascontiguousarray(ball, dtype=np.int64)
-    out = np.empty((2, ball.shape[0]))
+    out = np.empty((3, ball.shape[0]))
     _ball_heights(surface, ball, arr(rotation), arr(normal), arr(rolling), arr(transverse), arr(relative_omega),
                   float(ball_radius), arr(np.broadcast_to(rolling_radius, ball.shape)), out)
     return out

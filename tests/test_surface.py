@@ -165,7 +165,7 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
     pit = Defect("ball", 0.0, diameter, 0.28e-3, ball=0)
     x = np.linspace(-0.6e-3, 0.6e-3, 601)  # arc position of the pit's centre from the contact
     for across, chord in ((0.0, diameter), (0.3e-3, 0.8e-3)):
-        h, rate = _pit_heights(pit, x / R, spin, across / R, r_x)
+        h, rate, tilt = _pit_heights(pit, x / R, spin, across / R, r_x)
         along = R * np.arctan2(np.sin(x / R), math.cos(across / R) * np.cos(x / R))  # the arc seen from the contact
         u = np.clip(0.5 * chord - np.abs(along), 0.0, None)
         want = np.where(np.abs(along) < 0.5 * chord, -(r_x - np.sqrt(r_x * r_x - u * u)), 0.0)
@@ -173,10 +173,12 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
         smooth = (np.abs(x) < 0.5 * chord - 4e-6) & (np.abs(x) > 4e-6)
         numeric = np.gradient(h, x / R / spin)  # the ball turns by spin dt
         np.testing.assert_allclose(rate[smooth], numeric[smooth], rtol=2e-2, atol=0)
-    far, _ = _pit_heights(pit, np.array([math.pi]), spin)
+        # eq. 13.7: the slope under the contact, s its position along t1 (the pit is at -s)
+        np.testing.assert_allclose(tilt[smooth], -np.gradient(h, x)[smooth], rtol=2e-2, atol=0)
+    far, _, _ = _pit_heights(pit, np.array([math.pi]), spin)
     assert far[0] == 0.0
     # angle_deg turns the pit about the start spin axis: 90 deg ahead, met after the ball turns back by 90 deg
-    turned, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0), np.array([-math.pi / 2, 0.0]), spin)
+    turned, _, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0), np.array([-math.pi / 2, 0.0]), spin)
     assert turned[0] == pytest.approx(-min(5e-6, r_x - math.sqrt(r_x ** 2 - (0.5 * diameter) ** 2)), rel=1e-6)
     assert turned[1] == 0.0
 
@@ -188,11 +190,13 @@ def test_ball_waviness_is_the_fourier_sum_over_the_contacts_longitude_on_the_bal
     rows = ((0, 6, 0.3e-6, 20.0), (0, 3, 1e-6, -60.0), (1, 5, 2e-6, 0.0))
     phi = np.linspace(-math.pi, math.pi, 721)
     spin = 200.0
-    h, rate = _pit_heights(SurfaceModel(waviness=Waviness(ball=rows)), -phi, spin)
+    h, rate, tilt = _pit_heights(SurfaceModel(waviness=Waviness(ball=rows)), -phi, spin)
     want = 0.3e-6 * np.cos(6 * phi + math.radians(20.0)) + 1e-6 * np.cos(3 * phi - math.radians(60.0))
     np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
     numeric = np.gradient(h, -phi / spin)  # the ball turns by spin dt: phi falls
     np.testing.assert_allclose(rate[1:-1], numeric[1:-1], rtol=0, atol=2e-3 * np.max(np.abs(rate)))
+    # the contact moved by ds along t1 = e_y reaches longitude phi + ds / r
+    np.testing.assert_allclose(tilt[1:-1], np.gradient(h, R * phi)[1:-1], rtol=0, atol=2e-3 * np.max(np.abs(tilt)))
 
 
 def test_defect_across_the_raceway_and_turning_with_its_race():
@@ -314,3 +318,34 @@ def test_surface_start_is_settled_from_the_first_step():
     added = load[0, 3] - load[0, 0]
     assert added > 15.0
     assert np.max(np.abs(load[:, 3] - load[0, 3])) < 0.02 * added
+
+
+def test_over_a_notch_edge_the_load_tilts_with_the_ball_centres_path():
+    """Ball 0's outer contact 0.2 mm inside the exit edge of a 1-mm, 50-um notch (traction
+    off, 1300 N axial): the ball rests on the edge, and the load acts along the line from
+    the edge to the ball centre, tilted against the rolling direction t1 by the slope of the
+    centre's path (eq. 13.2, 13.7): F.t1 / Q = -u / sqrt(R_x² - u²), R_x = r (d_m + D cos a)/d_m
+    at the contact's angle (the numpy path); the compiled paths' forces equal it."""
+    from contact.ballrace import ContactLaw
+    from tests.test_compiled import _both_paths, _scene
+
+    _sc, con0, q, _ = _scene(axialForce=1300.0, law=ContactLaw(traction="none"))
+    length, u = 1e-3, 0.2e-3
+    psi = math.atan2(q[1], q[0])  # ball 0's azimuth
+    rho = math.hypot(q[0], q[1]) + R * math.cos(B.contact_angle)  # about the outer contact's radius
+    notch = SurfaceModel((Defect("outer", math.degrees(psi - (0.5 * length - u) / rho), length, 50e-6),))
+    _sc, con, q, qt = _scene(axialForce=1300.0, law=ContactLaw(traction="none"), surface=notch)
+    state = con.evaluate(0.0, q, qt, details=True)
+    kin, forces = state.outer, state.outer_forces
+    assert forces.normal_load[0] > 10.0
+    alpha = kin.contact_angle[0]
+    r_x = R * (B.pitch_diameter + B.ball_diameter * math.cos(alpha)) / B.pitch_diameter
+    edge = (kin.azimuth[0] - (psi - (0.5 * length - u) / rho) + 0.5 * length / kin.point_radius[0]) * kin.point_radius[0]
+    u_here = length - edge  # the contact's distance from the exit edge
+    assert u_here == pytest.approx(u, rel=0.05)
+    want = -u_here / math.sqrt(r_x ** 2 - u_here ** 2)
+    got = (forces.force[0] @ kin.rolling[0]) / forces.normal_load[0]
+    assert got == pytest.approx(want, rel=1e-3)
+    single, fast, ref = _both_paths(con, q, qt)
+    np.testing.assert_allclose(single, ref, rtol=0, atol=1e-9 * np.max(np.abs(ref)))
+    np.testing.assert_allclose(fast, ref, rtol=0, atol=1e-9 * np.max(np.abs(ref)))

@@ -128,16 +128,19 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     orz = v[ib, j, 2] - (vo[2] + wr[0] * ry_ - wr[1] * rx_)
     orbit_rel = (orx * t1x + ory * t1y + orz * t1z) / rho_c
     entrainment = -0.5 * u_x - orbit_rel * rho_p
+    tilt = 0.0  # dh/ds along t1: the surface's slope tilts the contact force (eq. 13.7)
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
+        tilt = height_slope / rho_p
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # the ball's own surface (eq. 13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
-        pit, pit_rate = ball_surface_height(
+        pit, pit_rate, pit_tilt = ball_surface_height(
             terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
             (wbx - orbit * R[0, 2], wby - orbit * R[1, 2], wbz - orbit * R[2, 2]), ball_radius, r_x)
         if pit != 0.0:
             pen += pit
             rate += pit_rate
+            tilt += pit_tilt
             penetration[ib, k, j] = pen
     # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
     r_y = f_conf * diam / (2.0 * f_conf - 1.0)
@@ -191,6 +194,12 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     moment[ib, k, j, 0] = ball_radius * (ny * Fz - nz * Fy) + mz * nx + m_r * t2x
     moment[ib, k, j, 1] = ball_radius * (nz * Fx - nx * Fz) + mz * ny + m_r * t2y
     moment[ib, k, j, 2] = ball_radius * (nx * Fy - ny * Fx) + mz * nz + m_r * t2z
+    if tilt != 0.0 and q > 0.0:
+        # over a slope the load acts along the tilted common normal, through the ball centre
+        # (no moment about it): -Q (n + dh/ds t1)
+        force[ib, k, j, 0] = Fx - q * tilt * t1x
+        force[ib, k, j, 1] = Fy - q * tilt * t1y
+        force[ib, k, j, 2] = Fz - q * tilt * t1z
 
 
 @njit(cache=True, error_model="numpy")
