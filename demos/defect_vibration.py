@@ -1,8 +1,8 @@
 """Race faults and the vibration a condition-monitoring engineer reads (MODEL.md §13).
 
 1. The Case Western Reserve 6205 at 1797 rpm under 300 N radial on a housing (3 kHz): an
-   outer-race notch (0.18 mm long, 0.28 mm deep, their EDM fault) and an inner-race spall
-   (1 mm, 20 um): housing acceleration, spectrum and envelope spectrum with the nominal,
+   outer-race notch (0.18 mm long, 0.28 mm deep, their EDM fault), an inner-race spall
+   (1 mm, 20 um) and a pit on a ball (their 0.18-mm ball fault): housing acceleration, spectrum and envelope spectrum with the nominal,
    kinematic and actual fault frequencies; figure and table under docs/.
 2. A plain Exudyn scene solved by ``mbs.SolveDynamic``: the gearbox high-speed shaft of
    demos/hss_shaft.py whose bearing 0 has an outer-race spall and sits on a ``races.Housing``;
@@ -24,23 +24,30 @@ from exudyn_bearing.studies.vibration import (actual_fault_frequencies, envelope
                                               spectral_peaks, vibration)
 
 FAULTS = {"outer-race notch": SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),)),
-          "inner-race spall": SurfaceModel((Defect("inner", 0.0, 1.0e-3, 20e-6),))}
+          "inner-race spall": SurfaceModel((Defect("inner", 0.0, 1.0e-3, 20e-6),)),
+          "ball pit": SurfaceModel((Defect("ball", 0.0, 0.18e-3, 0.28e-3, ball=0),))}
+#: the line each fault is read at: (fault frequency, factor)
+LINES = {"outer-race notch": ("BPFO", 1), "inner-race spall": ("BPFI", 1), "ball pit": ("BSF", 2)}
 
 
 def cwru(run_time, out):
     rows = []
     for name, surface in FAULTS.items():
         r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=run_time, surface=surface)
-        png = out / f"defect_vibration_{name.split('-')[0]}.png"
+        png = out / f"defect_vibration_{name.split('-')[0].split()[0]}.png"
         plot_vibration(r, png, title=f"CWRU 6205, {name}, 300 N radial, 1797 rpm")
-        f = r.fault_frequencies
-        key = "BPFO" if name.startswith("outer") else "BPFI"
+        key, factor = LINES[name]
+        f = {kind: {k: factor * v for k, v in lines.items()} for kind, lines in r.fault_frequencies.items()}
+        key = key if factor == 1 else f"{factor} {key}"
         peaks = ", ".join(f"{p:.2f}" for p, _ in r.envelope_peaks[:4])
-        rows.append(f"| {name} | {key} | {f['nominal'][key]:.3f} | {f['kinematic'][key]:.3f} | {f['actual'][key]:.3f} "
+        rows.append(f"| {name} | {key} | {f['nominal'][LINES[name][0]]:.3f} | {f['kinematic'][LINES[name][0]]:.3f} "
+                    f"| {f['actual'][LINES[name][0]]:.3f} "
                     f"| {r.envelope_peaks[0][0]:.2f} | {peaks} | {r.kinematic_cage_slip_percent:.3f} "
                     f"| {r.wall_time_s:.1f} | {r.solver['step_s'] * 1e6:.0f} µs, {r.solver['step_cuts']} |")
-        print(f"{name}: {key} nominal {f['nominal'][key]:.3f} Hz, kinematic {f['kinematic'][key]:.3f}, actual "
-              f"{f['actual'][key]:.3f}; envelope peaks (Hz) {peaks}; shaft {1797 / 60:.3f} Hz; "
+        k = LINES[name][0]
+        print(f"{name}: {key} nominal {f['nominal'][k]:.3f} Hz, kinematic {f['kinematic'][k]:.3f}, actual "
+              f"{f['actual'][k]:.3f}; envelope peaks (Hz) {peaks}; shaft {1797 / 60:.3f} Hz, "
+              f"FTF {r.fault_frequencies['actual']['FTF']:.3f} Hz; "
               f"{len(r.defect_events)} passages; run {r.wall_time_s:.1f} s -> {png}", flush=True)
     table = ("| fault | line | nominal Hz | kinematic Hz | actual Hz | strongest envelope line Hz | "
              "envelope peaks Hz | kinematic cage slip % | run s | step, steps beyond the plan |\n"

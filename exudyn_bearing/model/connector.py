@@ -57,7 +57,8 @@ class ConnectorState:
 
 def _take(record, part):
     """The same dataclass with every array field sliced to ``part``."""
-    return replace(record, **{f.name: getattr(record, f.name)[part] for f in fields(record)})
+    return replace(record, **{f.name: getattr(record, f.name)[part] for f in fields(record)
+                              if getattr(record, f.name) is not None})
 
 
 class BearingConnector:
