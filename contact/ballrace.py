@@ -15,7 +15,7 @@ from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
 from .terms import contact_terms, surface_terms, term_record
-from .surface import ball_heights
+from .ball_surface import ball_heights
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS", "CROOK_MODELS"]
 

@@ -34,7 +34,8 @@ from .kernel_cache import drop_stale
 drop_stale(__file__, Path(__file__).parent.glob("*.py"))
 
 from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
-from .surface import NO_SURFACE, SurfaceRecord, ball_height, race_height  # noqa: E402
+from .ball_surface import ball_height  # noqa: E402
+from .surface import NO_SURFACE, SurfaceRecord, race_height  # noqa: E402
 from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
 
 __all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor", "contact_loads",
@@ -112,7 +113,7 @@ def surface_height(terms, race, theta, contact_angle, point_radius, ball, rollin
 def ball_surface_height(terms, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                         rolling_radius):
     """Stage 0, the ball's side: (h m, dh/dt m/s, dh/ds along t1) of the pits and waviness of
-    ``ball`` at a contact by :func:`contact.surface.ball_height` (eq. 13.3, 13.6); zeros without."""
+    ``ball`` at a contact by :func:`contact.ball_surface.ball_height` (eq. 13.3, 13.6); zeros without."""
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] == 0:
         return 0.0, 0.0, 0.0
     return ball_height(terms.surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from contact.kinematics import rotation_matrices
-from contact.surface import Defect, SurfaceModel, Waviness, ball_heights, race_heights, surface_record
+from contact.ball_surface import ball_heights
+from contact.surface import Defect, SurfaceModel, Waviness, race_heights, surface_record
 from exudyn_bearing import REFERENCE_BEARING
 from exudyn_bearing.bearingfile import BearingFile, dumps_bearing, loads_bearing
 
