@@ -176,9 +176,11 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         Sphere drag on the balls' orbital motion (MODEL.md §8; default: the bearing file's,
         else fully flooded); None: off.
     surface : contact.surface.SurfaceModel
-        Race defects, waviness and ball-diameter variation (MODEL.md §13; default: the
-        bearing file's ``[[defect]]`` and ``[waviness]``, else perfect surfaces, which cost
-        nothing). The start state is the perfect bearing's.
+        Race and ball defects, race and ball waviness and ball-diameter variation (MODEL.md
+        §13; default: the bearing file's ``[[defect]]`` and ``[waviness]``, else perfect
+        surfaces, which cost nothing). The start state is the perfect bearing's with the
+        balls (and a created inner race free in translation) placed so that the surfaces
+        carry its forces at t = 0 (§13d; ``handle.connector.surface_start`` says what moved).
     innerRaceDisplacement : (dx, dy, dz), optional
         Start a created (``Driven``/``Free``) inner race displaced by this much from the
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
