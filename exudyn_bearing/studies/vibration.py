@@ -335,7 +335,7 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
             mult = (2,) if name == "BSF" else (1, 2, 3) if name in ("BPFO", "BPFI") else (1,)
             for m in mult:
                 ax[2].axvline(m * value, ls=style, lw=0.8, color=colors[name], alpha=0.8,
-                              label=f"{name} {kind}" if m == mult[0] else None)
+                              label=f"{'2 ' if name == 'BSF' else ''}{name} {kind}" if m == mult[0] else None)
     ax[2].set(xlabel="f (Hz)", ylabel="envelope amplitude (m/s²)", xlim=(0, fmax),
               title=f"envelope spectrum, band {result.band[0]:.0f}–{result.band[1]:.0f} Hz")
     ax[2].legend(fontsize=7, ncol=4)
