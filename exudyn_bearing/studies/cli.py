@@ -163,7 +163,8 @@ def _vibration(args) -> int:
         where = f"ball {d.ball} at {d.angle_deg:g} deg" if d.race == "ball" else f"{d.race} race at {d.angle_deg:g} deg"
         print(f"  defect {i}: {where}, {d.length * 1e3:g} mm long{note}")
     if surf.waviness.active:
-        print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}")
+        print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}, "
+              f"ball {list(surf.waviness.ball)}")
     if result.solver.get("surface_start"):
         print(f"  {result.solver['surface_start']} (MODEL.md §13d)")
     print(f"  kinematic cage slip {result.kinematic_cage_slip_percent:.3f} %")
