@@ -108,8 +108,9 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
 def _ball_heights(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius,
                   out):
     for i in range(ball.shape[0]):
-        out[0, i], out[1, i], out[2, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
-                                           relative_omega[i], ball_radius, rolling_radius[i])
+        out[0, i], out[1, i], out[2, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i],
+                                                      transverse[i], relative_omega[i], ball_radius,
+                                                      rolling_radius[i])
 
 
 def ball_heights(surface: SurfaceRecord, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,

@@ -38,8 +38,8 @@ from .ball_surface import ball_height  # noqa: E402
 from .surface import NO_SURFACE, SurfaceRecord, race_height  # noqa: E402
 from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
 
-__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor", "contact_loads",
-           "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]
+__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor",
+           "contact_loads", "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]
 
 #: floor of the thermal film factor φ_T (MODEL.md §11e)
 THERMAL_FLOOR = 0.05

@@ -132,7 +132,7 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
         tilt = height_slope / rho_p
-    if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # the ball's own surface (eq. 13.3, 13.6)
+    if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # its own surface (13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
         pit, pit_rate, pit_tilt = ball_surface_height(
             terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
@@ -210,7 +210,7 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
     ----------
     balls : BallStates
         Ball centres (m), velocities (m/s), GLOBAL angular velocities (rad/s), (B, Z, 3), and
-        rotations (B, Z, 3, 3), read only when a ball has a defect (else (B, 0, 3, 3) will do).
+        rotations (B, Z, 3, 3), read only when a ball has a surface of its own (else (B, 0, 3, 3)).
     frames : RaceFrames
         Origin, rotation (third column: axis), origin velocity and angular velocity of the
         inner (index 0) and outer (1) race frames of each state.

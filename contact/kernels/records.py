@@ -61,8 +61,8 @@ class BallStates(NamedTuple):
     position: np.ndarray  #: centres, m
     velocity: np.ndarray  #: m/s
     omega: np.ndarray  #: angular velocities, rad/s
-    #: body-to-global rotations (B, Z, 3, 3), read only for a ball defect (contact.surface,
-    #: eq. 13.3); (B, 0, 3, 3) otherwise
+    #: body-to-global rotations (B, Z, 3, 3), read only for a ball's own surface (a pit or
+    #: waviness, contact.ball_surface, eq. 13.3, 13.6); (B, 0, 3, 3) otherwise
     rotation: np.ndarray
 
 

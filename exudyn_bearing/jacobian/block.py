@@ -133,8 +133,8 @@ def jacobian_columns(con) -> dict:
     columns = [(gi, group, k, which) for gi, group in enumerate(groups) for k in range(6)
                for which in ("q", "v") if k not in frozen.get(int(group[0]), ())]
     # the compiled path takes the balls' rotation columns from their angular velocity
-    # columns (kernels.ball_rotation_columns): three perturbed states fewer. Not with a ball
-    # defect: then the forces depend on where a ball's material is, and they are perturbed
+    # columns (kernels.ball_rotation_columns): three perturbed states fewer. Not with a pit or
+    # waviness on a ball: then the forces depend on where its material is, and they are perturbed
     is_ball = [int(group[0]) in ball_slots for group in groups]
     material = con.terms.surface.material
     kept = [c for c in columns if material or not (is_ball[c[0]] and c[3] == "q" and c[2] >= 3)]

@@ -74,7 +74,8 @@ def _settle_surfaces(mbs, connector, nodes, layout, inner, held):
         moves.append((s, np.eye(3)))
     moved, info = surface_start(connector, q, np.concatenate(vel), moves)
     for slot, _ in moves:
-        mbs.SetNodeParameter(nodes[slot], "initialCoordinates", (moved - connector.reference)[6 * slot:6 * slot + 6].tolist())
+        start = (moved - connector.reference)[6 * slot:6 * slot + 6]
+        mbs.SetNodeParameter(nodes[slot], "initialCoordinates", start.tolist())
     connector.surface_start = info
     if not info["converged"]:
         warnings.warn(info["message"], stacklevel=3)

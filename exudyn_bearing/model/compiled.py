@@ -233,7 +233,8 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             v[0, j, i] = vel[0, balls[j], i]
             w[0, j, i] = omega[0, balls[j], i]
     force, moment = np.empty((1, 2, z, 3)), np.empty((1, 2, z, 3))
-    zr = z if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0 else 0  # where the material is
+    # a ball's own surface (a pit, waviness) reads where its material is: the balls' rotations
+    zr = z if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0 else 0
     a = np.empty((1, zr, 3, 3))
     for j in range(zr):
         a[0, j] = rot[0, balls[j]]
@@ -351,7 +352,7 @@ class CompiledForces:
                                     else x for x in self.physics)
         self._work = {}
         self._patterns = {}
-        self.material = con.terms.surface.material  # a ball defect: the contacts read the balls' rotations
+        self.material = con.terms.surface.material  # a ball's own surface: the contacts read the balls' rotations
         self._no_rotations = {}
         # ((t, force function), race speeds, applied force, driven rows) of the last call
         self._time_inputs = ((math.nan, None),)

@@ -449,7 +449,7 @@ class BearingConnector(ConnectorDiagnostics):
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
         if self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
             pits = {}
-            if self.terms.surface.material:  # a ball defect: where each ball's material is (eq. 13.3)
+            if self.terms.surface.material:  # a ball's own surface: where its material is (eq. 13.3, 13.6)
                 pits = dict(ball_rotation=np.concatenate([rot[:, balls]] * 2, axis=1).reshape(-1, 3, 3),
                             ball_omega=both(w), race_axis=stacked(1, (3, 3))[:, :, 2], race_omega=stacked(3, (3,)))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
