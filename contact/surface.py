@@ -261,6 +261,7 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
     if not isinstance(surface, SurfaceModel):
         raise ValueError(f"surface must be a SurfaceModel, got {surface!r}")
     diam, dm, alpha = float(bearing.ball_diameter), float(bearing.pitch_diameter), float(bearing.contact_angle)
+    circles = np.asarray(ball_circles(bearing) if circles is None else circles, dtype=float)
     rows, pits = [], []
     for d in surface.defects:
         if d.race == "ball":
@@ -269,7 +270,7 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
             if d.length >= 0.5 * math.pi * diam:
                 raise ValueError(f"defect.length: {d.length} m is longer than half the ball's circumference "
                                  f"{0.5 * math.pi * diam:.6g} m")
-            zero, axis = np.asarray(ball_circles(bearing) if circles is None else circles, dtype=float)[d.ball]
+            zero, axis = circles[d.ball]
             zero = zero / np.linalg.norm(zero)
             axis = axis / np.linalg.norm(axis)
             phi = math.radians(d.angle_deg)  # zero turned about the axis (Rodrigues)
@@ -303,7 +304,7 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
     for j, order, amp, phase in w.ball:
         if j >= bearing.balls:
             raise ValueError(f"waviness.ball: {j} is not a ball of this bearing (0 .. {bearing.balls - 1})")
-        zero, axis = np.asarray(ball_circles(bearing) if circles is None else circles, dtype=float)[j]
+        zero, axis = circles[j]
         ball_waves.append((j, order, amp, math.radians(phase), *(zero / np.linalg.norm(zero)),
                            *(axis / np.linalg.norm(axis))))
     return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 8),
