@@ -314,7 +314,8 @@ def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, metho
 #: Free contact angles up to this (rad) are deep-groove bearings: both shoulders are high, so
 #: a radial load alone is carried with the grooves centred (contact angles near zero). Above
 #: it the bearing is an angular-contact one, whose low shoulder the full-groove model does
-#: not have: a radial load then needs an axial force (or ``hold_axial``).
+#: not have: its fixed-angle start then fails under a radial load, and the geometric balance
+#: carries the load at centred grooves, as for a radial load alone.
 DEEP_GROOVE_MAX_ANGLE = math.radians(20.0)
 
 
@@ -462,7 +463,9 @@ def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_f
                 raise
             x[:3] = _centred_radial_start(bearing, radial_force, hertz_method)
             x[2] = 0.0 if hold_axial else x[2] + _axial_shift_estimate(bearing, axial_force, hertz_method)
-    elif radial_force > 0 and bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE:
+    elif radial_force > 0:
+        # a radial load alone: the full grooves carry it centred, at contact angles near zero,
+        # on any bearing (an angular-contact one, from x = 0, took ~30 Newton steps to get there)
         x[:3] = _centred_radial_start(bearing, radial_force, hertz_method)
     free = [0, 1] + ([] if hold_axial else [2]) + ([3, 4] if moment is not None else [])
     target = np.concatenate([[radial_force, 0.0, axial_force], moment if moment is not None else [0.0, 0.0]])
