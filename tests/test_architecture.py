@@ -138,3 +138,48 @@ def test_subpackages_import_only_earlier_layers():
                 if LAYERS.index(_layer(target)) > LAYERS.index(_layer(module)):
                     bad.append((module, target))
     assert bad == []
+
+
+def _cached_njit_functions(path):
+    """Names of the functions of ``path`` compiled with ``@njit(cache=True)``."""
+    names = set()
+    for node in ast.parse(path.read_text(encoding="utf-8")).body:
+        if isinstance(node, ast.FunctionDef):
+            for deco in node.decorator_list:
+                if (isinstance(deco, ast.Call) and getattr(deco.func, "id", None) == "njit"
+                        and any(k.arg == "cache" for k in deco.keywords)):
+                    names.add(node.name)
+    return names
+
+
+def _covered_by_package_drop(path):
+    """contact/kernels/__init__.py drops the caches of every module beside it."""
+    init = path.parent / "__init__.py"
+    return path.name != "__init__.py" and init.exists() and "drop_stale(_module" in init.read_text(encoding="utf-8")
+
+
+def test_cached_kernels_that_call_another_files_kernels_drop_stale_caches():
+    """numba's on-disk cache is keyed on a function's own file: a cached function that calls
+    a cached function of another file keeps the old callee after that file changed (a changed
+    surface.path_drop left the ball pits on the old law through ball_surface.py's cache).
+    Every such module must call contact.kernel_cache.drop_stale."""
+    offenders = []
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            if not _cached_njit_functions(path):
+                continue
+            mod = _module(path)
+            base = mod if path.name == "__init__.py" else mod.rpartition(".")[0]
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+                if not isinstance(node, ast.ImportFrom) or not node.module:
+                    continue
+                target = (".".join(base.split(".")[: len(base.split(".")) - (node.level - 1)] + [node.module])
+                          if node.level else node.module)
+                source = (ROOT / Path(*target.split("."))).with_suffix(".py")
+                if not source.exists() or source == path:
+                    continue
+                called = {a.name for a in node.names} & _cached_njit_functions(source)
+                if called and "drop_stale(" not in path.read_text(encoding="utf-8") \
+                        and not _covered_by_package_drop(path):
+                    offenders.append(f"{path.relative_to(ROOT)} calls {sorted(called)} of {source.relative_to(ROOT)}")
+    assert not offenders, offenders
