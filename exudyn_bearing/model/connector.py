@@ -15,7 +15,7 @@ from contact import cage as cage_physics
 from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces, with_surface
 from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
-from contact.surface import NO_SURFACE, SurfaceModel, surface_record
+from contact.surface import SurfaceModel, surface_record
 from contact.terms import term_record
 from ..bearing import BallDrag, Bearing
 from ..cage import CageModel
@@ -240,14 +240,9 @@ class BearingConnector(ConnectorDiagnostics):
         qq, vv = q.reshape(b, n, 6), q_t.reshape(b, n, 6)
         rot = self._rotations(np.ascontiguousarray(qq[:, :, 3:].reshape(-1, 3))).reshape(b, n, 3, 3)
         omega = np.einsum("bnij,bnj->bni", rot, vv[:, :, 3:])
-        kept = self.surface, self.terms
-        if not surface:
-            self.surface, self.terms = None, self.terms._replace(surface=NO_SURFACE)
-        try:
-            out, react, _, _, _ = self._batch_forces(t, np.ascontiguousarray(qq[:, :, :3]), rot,
-                                                     np.ascontiguousarray(vv[:, :, :3]), omega, details=True)
-        finally:
-            self.surface, self.terms = kept
+        out, react, _, _, _ = self._batch_forces(t, np.ascontiguousarray(qq[:, :, :3]), rot,
+                                                 np.ascontiguousarray(vv[:, :, :3]), omega, details=True,
+                                                 surface=surface)
         return (out + react.sum(axis=1)).reshape(b, -1)
 
     def forces(self, t, pos, rot, vel, omega_local, details=False):
@@ -291,7 +286,8 @@ class BearingConnector(ConnectorDiagnostics):
                               pocket_friction_force=None if friction is None else friction[0][0],
                               pocket_friction_loss=0.0 if friction is None else float(np.sum(friction[1][0])))
 
-    def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None, raw_reactions=None):
+    def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None, raw_reactions=None,
+                      surface=True):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
         to the race/cage slots (B, Z, n_nodes, 6), penetration (m) and normal load (N) of
@@ -302,12 +298,13 @@ class BearingConnector(ConnectorDiagnostics):
         ball–race contacts equal state 0's (see :class:`exudyn_bearing.model.compiled.CompiledForces`).
         ``raw_reactions``: a dict with ``slots``, which receives ``react`` of those slots
         (B, Z, len(slots), 6) before the held components are zeroed (the block Jacobian's
-        race columns need the contact moments a held race does not take)."""
-        if self._compiled is not None and not details:
+        race columns need the contact moments a held race does not take). ``surface=False``
+        leaves the surfaces out (numpy path)."""
+        if self._compiled is not None and not details and surface:
             out, react, pen, load = self._compiled(t, pos, rot, vel, omega, same_contacts)
             parts = None
         else:
-            out, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
+            out, react, parts = self._numpy_forces(t, pos, rot, vel, omega, surface)
             pen = parts[0].penetration.reshape(pos.shape[0], 2, self.z)
             load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
         if self.guide is not None:
@@ -424,9 +421,10 @@ class BearingConnector(ConnectorDiagnostics):
         react[:, :, s, 3:] -= np.einsum("bji,bzj->bzi", rot[:, s], cross(point - pos[:, s, None], force))
         return force, loss
 
-    def _numpy_forces(self, t, pos, rot, vel, omega):
+    def _numpy_forces(self, t, pos, rot, vel, omega, surface=True):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of
-        the compiled path), before applied loads and held races."""
+        the compiled path), before applied loads and held races; ``surface=False`` without
+        the surfaces."""
         bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
         balls = self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
@@ -447,7 +445,7 @@ class BearingConnector(ConnectorDiagnostics):
         grooves, signs, params = self._contact_params(bsz)
         kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
-        if self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
+        if surface and self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
             pits = {}
             if self.terms.surface.material:  # a ball's own surface: where its material is (eq. 13.3, 13.6)
                 pits = dict(ball_rotation=np.concatenate([rot[:, balls]] * 2, axis=1).reshape(-1, 3, 3),
