@@ -9,3 +9,12 @@ thermal EHD traction and spin moment), :mod:`contact.ballrace` (a contact's forc
 extension point), :mod:`contact.cage` (pockets, spring chain, drag, land) and
 :mod:`contact.kernels` (the compiled kernels).
 """
+from pathlib import Path
+
+from .kernel_cache import drop_stale
+
+# numba's cache is per file, and the cached functions of these modules call and inline each
+# other's (terms -> surface, ball_surface -> surface, ...): drop a module's caches when any
+# module of the package changed (contact.kernels does the same for the kernels)
+_SOURCES = sorted(Path(__file__).parent.glob("*.py"))
+drop_stale(_SOURCES, _SOURCES)

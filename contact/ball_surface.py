@@ -20,18 +20,11 @@ The height enters the contact as a race surface's does (stage 0 of :mod:`contact
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 from numba import njit
 
-from .kernel_cache import drop_stale
-
-# ball_height inlines surface.path_drop: numba's cache is per file, so a changed surface.py
-# would leave this file's cached ball_height (and every kernel linking it) on the old law
-drop_stale(__file__, [__file__, Path(__file__).with_name("surface.py")])
-
-from .surface import SurfaceRecord, path_drop  # noqa: E402
+from .surface import SurfaceRecord, path_drop
 
 __all__ = ["ball_height", "ball_heights"]
 

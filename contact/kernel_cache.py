@@ -24,16 +24,24 @@ def _cache_dirs(module_file: Path):
     return dirs
 
 
-def drop_stale(module_file, sources) -> bool:
-    """Delete the numba cache files (``<stem>.*.nbi``/``.nbc``) of ``module_file`` when the
-    digest of ``sources`` (paths) differs from the one recorded next to them; records the
-    new digest. Returns True when caches were dropped. A read-only install is left alone."""
-    module_file = Path(module_file)
+def drop_stale(modules, sources) -> bool:
+    """Delete the numba cache files (``<stem>.*.nbi``/``.nbc``) of ``modules`` (one module's
+    path or several) when the digest of ``sources`` (paths) differs from the one recorded
+    next to them; records the new digest. Returns True when caches were dropped. A
+    read-only install is left alone."""
+    modules = [Path(modules)] if isinstance(modules, (str, os.PathLike)) else [Path(m) for m in modules]
     digest = hashlib.sha256()
     for src in sorted(Path(s) for s in sources):
         digest.update(src.name.encode())
         digest.update(src.read_bytes())
     stamp_text = digest.hexdigest()
+    dropped = False
+    for module_file in modules:
+        dropped |= _drop(module_file, stamp_text)
+    return dropped
+
+
+def _drop(module_file: Path, stamp_text: str) -> bool:
     stamp = module_file.parent / "__pycache__" / f"{module_file.stem}.kernels.sha256"
     try:
         if stamp.is_file() and stamp.read_text() == stamp_text:

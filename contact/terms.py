@@ -22,21 +22,17 @@ A term that is off costs one comparison per contact.
 """
 from __future__ import annotations
 
-from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 from numba import njit
 
-from .kernel_cache import drop_stale
-
-# the stages call the term laws of other files (a new term's too): numba's cache is per file
-drop_stale(__file__, Path(__file__).parent.glob("*.py"))
-
-from .rolling_resistance import hydrodynamic_force, rolling_loads  # noqa: E402
-from .ball_surface import ball_height  # noqa: E402
-from .surface import NO_SURFACE, SurfaceRecord, race_height  # noqa: E402
-from .thermal_film import film_factor as thermal_film_factor  # noqa: E402
+# the stages call the term laws of other files (a new term's too): contact/__init__.py drops
+# this module's numba cache when any of them changed
+from .rolling_resistance import hydrodynamic_force, rolling_loads
+from .ball_surface import ball_height
+from .surface import NO_SURFACE, SurfaceRecord, race_height
+from .thermal_film import film_factor as thermal_film_factor
 
 __all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor",
            "contact_loads", "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]

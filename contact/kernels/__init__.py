@@ -32,8 +32,7 @@ from ..kernel_cache import drop_stale  # noqa: E402
 # the kernels call and inline functions of other modules (contact/*.py, this package): numba's
 # cache is per file, so drop a module's cache when any contact source changed
 SOURCES = sorted([*Path(__file__).parent.parent.glob("*.py"), *Path(__file__).parent.glob("*.py")])
-for _module in Path(__file__).parent.glob("*.py"):
-    drop_stale(_module, SOURCES)
+drop_stale(Path(__file__).parent.glob("*.py"), SOURCES)
 
 from .cage import cage_and_drag, land_forces, pocket_friction  # noqa: E402
 from .crook import crook_fast, crook_one, crook_tables  # noqa: E402
