@@ -306,8 +306,9 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
     """``kin`` with the surfaces of ``terms`` (stage 0 of :mod:`contact.terms`, MODEL.md §13):
     approach δ + h, its rate + dh/dt, and the slope dh/ds that tilts the force (eq. 13.7);
     ``race`` (0 inner, 1 outer) and ``ball`` index of each contact; D and d_m in m (the
-    contacts' reduced radii R_x, §2). A ball's own surface (eq. 13.3, 13.6) needs per contact the ball's ``ball_rotation`` (n, 3, 3) and ``ball_omega``
-    (n, 3) rad/s, and the race's ``race_axis`` (n, 3) and ``race_omega`` (n, 3) rad/s."""
+    contacts' reduced radii R_x, §2). A ball's own surface (eq. 13.3, 13.6) needs per contact
+    the ball's ``ball_rotation`` (n, 3, 3) and ``ball_omega`` (n, 3) rad/s, and the race's
+    ``race_axis`` (n, 3) and ``race_omega`` (n, 3) rad/s."""
     race = np.asarray(race)
     r_x = geometry.rolling_radius(ball_diameter, pitch_diameter, kin.contact_angle, 2.0 * race - 1.0)
     h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)

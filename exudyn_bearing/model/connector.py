@@ -445,7 +445,7 @@ class BearingConnector(ConnectorDiagnostics):
         grooves, signs, params = self._contact_params(bsz)
         kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
                                        stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
-        if surface and self.surface is not None:  # stage 0 of the per-contact terms (contact.terms, MODEL.md §13)
+        if surface and self.surface is not None:  # stage 0 of the per-contact terms (MODEL.md §13)
             pits = {}
             if self.terms.surface.material:  # a ball's own surface: where its material is (eq. 13.3, 13.6)
                 pits = dict(ball_rotation=np.concatenate([rot[:, balls]] * 2, axis=1).reshape(-1, 3, 3),
