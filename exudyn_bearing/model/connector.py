@@ -7,7 +7,7 @@ enters as F, a global torque tau as A^T tau (A = node rotation matrix).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -22,44 +22,9 @@ from ..cage import CageModel
 from ..jacobian import block_jacobian
 from ..races import Race
 from .diagnostics import ConnectorDiagnostics
+from .state import ConnectorState, first_state, per_race
 
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
-
-
-@dataclass
-class ConnectorState:
-    """Everything one evaluation computed (for outputs and tests), global frame."""
-
-    t: float
-    ball_position: np.ndarray
-    ball_velocity: np.ndarray
-    ball_omega: np.ndarray
-    inner: ContactKinematics
-    outer: ContactKinematics
-    inner_forces: ContactForces
-    outer_forces: ContactForces
-    cage_force: np.ndarray  #: on each ball, (Z, 3)
-    drag_force: np.ndarray  #: on each ball, (Z, 3)
-    cage_omega: np.ndarray | None
-    inner_omega: np.ndarray
-    outer_omega: np.ndarray
-    frame_rotation: np.ndarray  #: bearing (outer race) frame -> global
-    frame_origin: np.ndarray
-    generalized: np.ndarray = field(repr=False, default=None)
-    cage_eccentricity: float = 0.0  #: rigid cage centre off its guiding (else the outer) race's axis, m
-    cage_land_force: np.ndarray = None  #: guiding land on the cage, (3,), N (None: not guided)
-    cage_position: np.ndarray = None  #: rigid cage centre, (3,), m (None: no rigid cage)
-    cage_velocity: np.ndarray = None  #: its velocity, (3,), m/s
-    pocket_friction_force: np.ndarray = None  #: pocket friction on each ball, (Z, 3), N (None: off)
-    pocket_friction_loss: float = 0.0  #: power the pocket friction dissipates, W
-    land_friction_loss: float = 0.0  #: power the guiding land's oil film dissipates, W
-    land_drive_power: float = 0.0  #: power the guiding race puts into the cage through that film, W
-
-
-def _take(record, part):
-    """The same dataclass with every array field sliced to ``part``."""
-    return replace(record, **{f.name: getattr(record, f.name)[part] for f in fields(record)
-                              if getattr(record, f.name) is not None})
 
 
 class BearingConnector(ConnectorDiagnostics):
@@ -177,8 +142,8 @@ class BearingConnector(ConnectorDiagnostics):
         race: Race = self.races[name]
         slot = self.layout[name]
         b = pos.shape[0]
-        if slot is None:  # kinematic race
-            w = race.speed(t) * self.axis
+        if slot is None:  # kinematic race; per state for recorded times t (B,)
+            w = (race.speed(t) if np.ndim(t) == 0 else np.array([race.speed(x) for x in t])[:, None]) * self.axis
             return (np.broadcast_to(self.origin, (b, 3)), np.broadcast_to(self.rotation, (b, 3, 3)),
                     np.zeros((b, 3)), np.broadcast_to(w, (b, 3)), None)
         r_loc, rot_loc = self.race_frames[name]
@@ -235,15 +200,30 @@ class BearingConnector(ConnectorDiagnostics):
         """Generalized forces (B, 6 n_nodes) of B states (absolute coordinates and velocities,
         (B, 6 n_nodes)) through the numpy path, with the surfaces or, ``surface=False``,
         without them (the surface start, :mod:`exudyn_bearing.solvers.surface_start`)."""
+        pos, rot, vel, omega = self._decode_batch(q, q_t)
+        out, react, _, _, _ = self._batch_forces(t, pos, rot, vel, omega, details=True, surface=surface)
+        return (out + react.sum(axis=1)).reshape(pos.shape[0], -1)
+
+    def states(self, t, q, q_t) -> ConnectorState:
+        """Everything the numpy path computes for B recorded states at once (times ``t`` (B,) s,
+        absolute coordinates and velocities (B, 6 n_nodes)): a :class:`ConnectorState` whose
+        fields, but the bearing frame's, carry a leading axis B; ``generalized`` is None. For
+        the outputs of a finished run: the states are not checked as :meth:`forces` does."""
+        t = np.asarray(t, dtype=float)
+        pos, rot, vel, omega = self._decode_batch(q, q_t)
+        _, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
+        friction = self._add_pocket_friction(parts[2], pos, rot, vel, omega, np.zeros_like(react[:, 0]), react) \
+            if self.cage.pocket_friction > 0 else None
+        return self._state(t, pos, rot, vel, omega, None, (*parts, friction))
+
+    def _decode_batch(self, q, q_t):
+        """:meth:`decode` for B states (B, 6 n_nodes), with GLOBAL angular velocities."""
         q, q_t = np.atleast_2d(q), np.atleast_2d(q_t)
         b, n = q.shape[0], self.n_nodes
         qq, vv = q.reshape(b, n, 6), q_t.reshape(b, n, 6)
         rot = self._rotations(np.ascontiguousarray(qq[:, :, 3:].reshape(-1, 3))).reshape(b, n, 3, 3)
         omega = np.einsum("bnij,bnj->bni", rot, vv[:, :, 3:])
-        out, react, _, _, _ = self._batch_forces(t, np.ascontiguousarray(qq[:, :, :3]), rot,
-                                                 np.ascontiguousarray(vv[:, :, :3]), omega, details=True,
-                                                 surface=surface)
-        return (out + react.sum(axis=1)).reshape(b, -1)
+        return np.ascontiguousarray(qq[:, :, :3]), rot, np.ascontiguousarray(vv[:, :, :3]), omega
 
     def forces(self, t, pos, rot, vel, omega_local, details=False):
         """Generalized forces from decoded node states (see :meth:`decode`): the force
@@ -272,19 +252,23 @@ class BearingConnector(ConnectorDiagnostics):
         out = out + react.sum(axis=0)
         if not details:
             return out.ravel()
+        return first_state(self._state(t, pos[None], rot[None], vel[None], omega[None], out.reshape(1, -1), parts))
+
+    def _state(self, t, pos, rot, vel, omega, generalized, parts) -> ConnectorState:
+        """The :class:`ConnectorState` of B states (leading axis) from the numpy path's ``parts``."""
         kin_all, frc_all, cage_force, drag_force, race_omega, friction = parts
-        z = self.z
-        halves = [_take(obj, part) for obj in (kin_all, frc_all) for part in (slice(0, z), slice(z, 2 * z))]
-        cage_slot = self.layout["cage"]
-        balls = self.layout["balls"]
-        return ConnectorState(t, pos[balls], vel[balls], omega[balls], halves[0], halves[1], halves[2], halves[3],
-                              cage_force[0], drag_force[0], omega[cage_slot] if self.cage.kind == "rigid" else None,
-                              race_omega["inner"][0], race_omega["outer"][0],
-                              self.rotation, self.origin, out.ravel(), **self._land_details(t, pos, rot, vel, omega),
-                              cage_position=pos[cage_slot] if self.cage.kind == "rigid" else None,
-                              cage_velocity=vel[cage_slot] if self.cage.kind == "rigid" else None,
-                              pocket_friction_force=None if friction is None else friction[0][0],
-                              pocket_friction_loss=0.0 if friction is None else float(np.sum(friction[1][0])))
+        b, z = pos.shape[0], self.z
+        (kin_in, kin_out), (frc_in, frc_out) = per_race(kin_all, b, z), per_race(frc_all, b, z)
+        rigid = self.cage.kind == "rigid"
+        cage, balls = self.layout["cage"], self.layout["balls"]
+        return ConnectorState(t, pos[:, balls], vel[:, balls], omega[:, balls], kin_in, kin_out, frc_in, frc_out,
+                              cage_force, drag_force, omega[:, cage] if rigid else None,
+                              race_omega["inner"], race_omega["outer"], self.rotation, self.origin, generalized,
+                              **self._land_details(t, pos, rot, vel, omega),
+                              cage_position=pos[:, cage] if rigid else None,
+                              cage_velocity=vel[:, cage] if rigid else None,
+                              pocket_friction_force=None if friction is None else friction[0],
+                              pocket_friction_loss=np.zeros(b) if friction is None else np.sum(friction[1], axis=1))
 
     def _batch_forces(self, t, pos, rot, vel, omega, details=False, same_contacts=None, raw_reactions=None,
                       surface=True):
@@ -358,23 +342,24 @@ class BearingConnector(ConnectorDiagnostics):
         return force, slot, np.linalg.norm(cage_physics.radial_offset(pos[:, s], origin, rotation[..., 2]), axis=-1)
 
     def _land_details(self, t, pos, rot, vel, omega) -> dict:
-        """The :class:`ConnectorState` fields of the cage's land for one state: eccentricity
-        (m; an unguided rigid cage's from the outer race axis), land force ((3,) N or None)
-        and, with land friction, the power its film dissipates, T (w_race - w_cage), and the
-        power its race puts in through it, T w_race (W)."""
+        """The :class:`ConnectorState` fields of the cage's land for B states, each (B,) or
+        (B, 3): eccentricity (m; an unguided rigid cage's from the outer race axis), land force
+        (N, None: not guided) and, with land friction, the power its film dissipates,
+        T (w_race - w_cage), and the power its race puts in through it, T w_race (W)."""
+        b = pos.shape[0]
+        details = dict(cage_eccentricity=np.zeros(b), land_friction_loss=np.zeros(b), land_drive_power=np.zeros(b))
         if self.guide is None:
-            if self.cage.kind != "rigid":
-                return {}
-            origin, rotation, _, _, _ = self._race_frame("outer", t, pos[None], vel[None], rot[None], omega[None])
-            return dict(cage_eccentricity=float(np.linalg.norm(cage_physics.radial_offset(
-                pos[self.layout["cage"]], origin[0], rotation[0, :, 2]))))
-        force, _, e = self.land_force(t, pos[None], rot[None], vel[None], omega[None])
-        details = dict(cage_eccentricity=float(e[0]), cage_land_force=force[0])
+            if self.cage.kind == "rigid":
+                origin, rotation, _, _, _ = self._race_frame("outer", t, pos, vel, rot, omega)
+                details["cage_eccentricity"] = np.linalg.norm(cage_physics.radial_offset(
+                    pos[:, self.layout["cage"]], origin, rotation[..., 2]), axis=-1)
+            return details
+        force, _, e = self.land_force(t, pos, rot, vel, omega)
+        details.update(cage_eccentricity=e, cage_land_force=force)
         if self.guide[4] > 0:
-            torque, axis, w_land = self.land_torque(t, pos[None], rot[None], vel[None], omega[None], e)
-            slip = float(w_land[0]) - float(omega[self.layout["cage"]] @ axis[0])
-            details.update(land_friction_loss=float(torque[0]) * slip,
-                           land_drive_power=float(torque[0]) * float(w_land[0]))
+            torque, axis, w_land = self.land_torque(t, pos, rot, vel, omega, e)
+            slip = w_land - np.einsum("bi,bi->b", omega[:, self.layout["cage"]], axis)
+            details.update(land_friction_loss=torque * slip, land_drive_power=torque * w_land)
         return details
 
     def land_torque(self, t, pos, rot, vel, omega, eccentricity):

@@ -184,96 +184,94 @@ _CONTACT_FIELDS = ("load", "contact_angle", "slip_rolling", "slip_transverse", "
                    "damping_loss")
 
 
-def compute_results(handle, time, q, q_t) -> BearingResults:
-    """Evaluate the connector on each recorded state and derive the outputs."""
-    con = handle.connector
-    bearing = con.bearing
-    steps, z = len(time), bearing.balls
+def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
+    """Evaluate the connector on the recorded states (times (T,) s, absolute coordinates and
+    velocities (T, 6 n_nodes)) and derive the outputs; ``chunk`` states go through the
+    connector's numpy path at once."""
+    time = np.asarray(time, dtype=float)
+    parts = [_outputs(handle.connector, time[k:k + chunk], q[k:k + chunk], q_t[k:k + chunk])
+             for k in range(0, len(time), chunk)]
+    out = {name: (np.concatenate([p[name] for p in parts]) if not isinstance(parts[0][name], dict) else
+                  {f: np.concatenate([p[name][f] for p in parts]) for f in parts[0][name]})
+           for name in parts[0]}
+    bearing = handle.connector.bearing
+    mu_max, warning = _traction_coefficient(time, {"inner": out["inner"], "outer": out["outer"]})
+    nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(out["inner_speed"], out["outer_speed"])])
+    cage = out["cage_speed"]
+    kin_slip = np.mean(cage_slip(out["kin"], cage[:, None]), axis=1)
+    return BearingResults(time, out["inner_speed"], out["outer_speed"], cage, nominal, cage_slip(nominal, cage),
+                          out["kin"], kin_slip, out["psi"], out["orbit"], out["w_orb"], out["byz"], out["bxz"],
+                          out["inner"], out["outer"], out["inner_race_force"], out["inner_moment"],
+                          out["outer_race_force"], out["cage_eccentricity"], out["land_force"], mu_max, warning,
+                          out["outer_moment"], out["drag_loss"], out["cage_loss"], out["land_loss"], out["land_drive"])
+
+
+def _outputs(con, time, q, q_t) -> dict:
+    """The per-state outputs of B recorded states (:meth:`BearingConnector.states`): arrays
+    with a leading axis B, the contact arrays per race in dicts."""
+    s = con.states(time, q, q_t)
     frame, origin, axis = con.rotation, con.origin, con.axis
-    arrays = {name: np.zeros(steps) for name in ("inner_speed", "outer_speed", "cage_speed")}
-    per_ball = {name: np.zeros((steps, z)) for name in ("psi", "orbit", "kin", "byz", "bxz")}
-    w_orb = np.zeros((steps, z, 3))
-    contacts = {race: {f: np.zeros((steps, z)) for f in _CONTACT_FIELDS} for race in ("inner", "outer")}
-    race_force = {race: np.zeros((steps, 3)) for race in ("inner", "outer")}
-    inner_moment = np.zeros((steps, 3))
-    outer_moment = np.zeros((steps, 3))
-    losses = np.zeros((steps, 3))  # ball drag, cage pockets, guiding land
-    land_drive = np.zeros(steps)  # power the guiding race puts into the cage through the land film
-    land = np.zeros((steps, 2))  # cage eccentricity, land force
-    for k in range(steps):
-        s = con.evaluate(time[k], q[k], q_t[k], details=True)
-        land[k, 0] = s.cage_eccentricity
-        if s.cage_land_force is not None:
-            land[k, 1] = np.linalg.norm(s.cage_land_force)
-        rel = (s.ball_position - origin) @ frame  # bearing frame
-        vel = s.ball_velocity @ frame
-        omega = s.ball_omega @ frame
-        radius = np.hypot(rel[:, 0], rel[:, 1])
-        e_r = np.stack([rel[:, 0] / radius, rel[:, 1] / radius, np.zeros(z)], axis=1)
-        e_psi = np.stack([-e_r[:, 1], e_r[:, 0], np.zeros(z)], axis=1)
-        per_ball["psi"][k] = np.arctan2(rel[:, 1], rel[:, 0])
-        per_ball["orbit"][k] = np.einsum("ij,ij->i", vel, e_psi) / radius
-        wx, wy, wz = (np.einsum("ij,ij->i", omega, e) for e in (e_psi, e_r, np.broadcast_to([0.0, 0, 1], (z, 3))))
-        w_orb[k] = np.stack([wx, wy, wz], axis=1)
-        norm = np.maximum(np.linalg.norm(omega, axis=1), 1e-300)
-        per_ball["byz"][k] = np.arcsin(np.minimum(np.abs(wx) / norm, 1.0))
-        per_ball["bxz"][k] = np.arcsin(np.minimum(np.abs(wy) / norm, 1.0))
-        w_i, w_o = float(s.inner_omega @ axis), float(s.outer_omega @ axis)
-        arrays["inner_speed"][k], arrays["outer_speed"][k] = w_i, w_o
-        arrays["cage_speed"][k] = float(s.cage_omega @ axis) if s.cage_omega is not None else np.mean(per_ball["orbit"][k])
-        # race surface speed along the rolling direction at each contact centre
-        surface = []
-        for kin in (s.inner, s.outer):
-            v_ball_p = s.ball_velocity + cross(s.ball_omega, kin.point - s.ball_position)
-            surface.append(np.einsum("ij,ij->i", v_ball_p, kin.rolling) + kin.slip_rolling)
-        p_in, p_out = (s.inner.point - origin) @ frame, (s.outer.point - origin) @ frame
-        per_ball["kin"][k] = rolling_cage_speed(rel, omega, p_in, p_out, w_i, w_o, surface_speeds=surface)
+    b, z = s.ball_position.shape[:2]
+    rel = (s.ball_position - origin) @ frame  # bearing frame
+    vel = s.ball_velocity @ frame
+    omega = s.ball_omega @ frame
+    radius = np.hypot(rel[..., 0], rel[..., 1])
+    e_r = np.stack([rel[..., 0] / radius, rel[..., 1] / radius, np.zeros((b, z))], axis=-1)
+    e_psi = np.stack([-e_r[..., 1], e_r[..., 0], np.zeros((b, z))], axis=-1)
+    orbit = np.einsum("bij,bij->bi", vel, e_psi) / radius
+    w_orb = np.stack([np.einsum("bij,bij->bi", omega, e_psi), np.einsum("bij,bij->bi", omega, e_r), omega[..., 2]],
+                     axis=-1)
+    norm = np.maximum(np.linalg.norm(omega, axis=-1), 1e-300)
+    w_i, w_o = s.inner_omega @ axis, s.outer_omega @ axis
+    cage = s.cage_omega @ axis if s.cage_omega is not None else np.mean(orbit, axis=1)
+    # race surface speed along the rolling direction at each contact centre
+    surface = []
+    for kin in (s.inner, s.outer):
+        v_ball_p = s.ball_velocity + cross(s.ball_omega, kin.point - s.ball_position)
+        surface.append((np.einsum("bij,bij->bi", v_ball_p, kin.rolling) + kin.slip_rolling).ravel())
+    p_in, p_out = (s.inner.point - origin) @ frame, (s.outer.point - origin) @ frame
+    kinematic = rolling_cage_speed(rel.reshape(-1, 3), omega.reshape(-1, 3), p_in.reshape(-1, 3),
+                                   p_out.reshape(-1, 3), np.repeat(w_i, z), np.repeat(w_o, z),
+                                   surface_speeds=surface).reshape(b, z)
+    out = {"inner_speed": w_i, "outer_speed": w_o, "cage_speed": cage, "psi": np.arctan2(rel[..., 1], rel[..., 0]),
+           "orbit": orbit, "w_orb": w_orb, "kin": kinematic,
+           "byz": np.arcsin(np.minimum(np.abs(w_orb[..., 0]) / norm, 1.0)),
+           "bxz": np.arcsin(np.minimum(np.abs(w_orb[..., 1]) / norm, 1.0)),
+           "cage_eccentricity": s.cage_eccentricity,
+           "land_force": np.zeros(b) if s.cage_land_force is None else np.linalg.norm(s.cage_land_force, axis=-1),
+           "land_drive": s.land_drive_power}
+    out["drag_loss"], out["cage_loss"], out["land_loss"] = _body_losses(s)
+    for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
         # a race receives -F at each contact point and -M_z n: about the bearing centre o that
         # is -[(c - o) x F + (moment on the ball about its centre)]
-        inner_moment[k] = -np.sum(cross(s.ball_position - origin, s.inner_forces.force) + s.inner_forces.moment,
-                                  axis=0) @ frame
-        outer_moment[k] = -np.sum(cross(s.ball_position - origin, s.outer_forces.force) + s.outer_forces.moment,
-                                  axis=0) @ frame
-        losses[k] = _body_losses(s)
-        land_drive[k] = s.land_drive_power
-        for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
-            race_force[race][k] = -f.force.sum(axis=0) @ frame
-            c = contacts[race]
-            c["load"][k], c["contact_angle"][k] = f.normal_load, kin.contact_angle
-            c["slip_rolling"][k], c["slip_transverse"][k] = kin.slip_rolling, kin.slip_transverse
-            c["slip"][k] = np.hypot(kin.slip_rolling, kin.slip_transverse)
-            c["spin"][k], c["film"][k] = kin.spin, f.film_thickness
-            c["traction_rolling"][k], c["traction_transverse"][k] = f.traction_rolling, f.traction_transverse
-            c["spin_moment"][k], c["heat"][k], c["max_pressure"][k] = f.spin_moment, f.heat, f.max_pressure
-            for name in ("rolling_loss", "damping_loss"):
-                if getattr(f, name) is not None:
-                    c[name][k] = getattr(f, name)
-    mu_max, warning = _traction_coefficient(time, contacts)
-    nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(arrays["inner_speed"], arrays["outer_speed"])])
-    cage = arrays["cage_speed"]
-    kin_slip = np.mean(cage_slip(per_ball["kin"], cage[:, None]), axis=1)
-    return BearingResults(np.asarray(time), arrays["inner_speed"], arrays["outer_speed"], cage, nominal,
-                          cage_slip(nominal, cage), per_ball["kin"], kin_slip, per_ball["psi"], per_ball["orbit"],
-                          w_orb, per_ball["byz"], per_ball["bxz"], contacts["inner"], contacts["outer"],
-                          race_force["inner"], inner_moment, race_force["outer"], land[:, 0], land[:, 1], mu_max,
-                          warning, outer_moment, losses[:, 0], losses[:, 1], losses[:, 2], land_drive)
+        out[f"{race}_moment"] = -np.sum(cross(s.ball_position - origin, f.force) + f.moment, axis=1) @ frame
+        out[f"{race}_race_force"] = -f.force.sum(axis=1) @ frame
+        c = {"load": f.normal_load, "contact_angle": kin.contact_angle, "slip_rolling": kin.slip_rolling,
+             "slip_transverse": kin.slip_transverse, "slip": np.hypot(kin.slip_rolling, kin.slip_transverse),
+             "spin": kin.spin, "film": f.film_thickness, "traction_rolling": f.traction_rolling,
+             "traction_transverse": f.traction_transverse, "spin_moment": f.spin_moment, "heat": f.heat,
+             "max_pressure": f.max_pressure}
+        for name in ("rolling_loss", "damping_loss"):
+            c[name] = np.zeros((b, z)) if getattr(f, name) is None else getattr(f, name)
+        out[race] = {name: np.asarray(c[name], dtype=float) for name in _CONTACT_FIELDS}
+    return out
 
 
 def _body_losses(s) -> tuple:
-    """(ball drag, cage pocket (damping and friction), guiding land) power losses of one
-    :class:`ConnectorState`, W:
-    minus the power of each force pair over the velocities of the points it acts on (the
-    pocket reaction acts on the cage at the ball centre, the land force at the cage centre)."""
-    drag = -float(np.sum(s.drag_force * s.ball_velocity))
-    pocket = land = 0.0
+    """(ball drag, cage pocket (damping and friction), guiding land) power losses of B states
+    (a batched :class:`ConnectorState`), (B,) W each: minus the power of each force pair over
+    the velocities of the points it acts on (the pocket reaction acts on the cage at the
+    ball centre, the land force at the cage centre)."""
+    drag = -np.sum(s.drag_force * s.ball_velocity, axis=(1, 2))
+    pocket = land = np.zeros(len(drag))
     if s.cage_position is not None:
-        v_pocket = s.cage_velocity + cross(s.cage_omega, s.ball_position - s.cage_position)
+        v_pocket = s.cage_velocity[:, None] + cross(s.cage_omega[:, None], s.ball_position - s.cage_position[:, None])
         # + the pocket friction's, -F_f . v_t at the contact points (MODEL.md §11d)
-        pocket = -float(np.sum(s.cage_force * (s.ball_velocity - v_pocket))) + s.pocket_friction_loss
+        pocket = -np.sum(s.cage_force * (s.ball_velocity - v_pocket), axis=(1, 2)) + s.pocket_friction_loss
         if s.cage_land_force is not None:  # its contact, and its film's friction (MODEL.md §11d)
-            land = -float(s.cage_land_force @ s.cage_velocity) + s.land_friction_loss
+            land = -np.einsum("bi,bi->b", s.cage_land_force, s.cage_velocity) + s.land_friction_loss
     elif s.cage_force is not None:
-        pocket = -float(np.sum(s.cage_force * s.ball_velocity))  # spring chain: balls only
+        pocket = -np.sum(s.cage_force * s.ball_velocity, axis=(1, 2))  # spring chain: balls only
     return drag, pocket, land
 
 
