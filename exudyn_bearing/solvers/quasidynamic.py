@@ -426,12 +426,13 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe):
         balance = make(at(target))
         lo, hi = balance.bounds()
         guess = y if last is None else y + (y - last[1]) * (target - done) / (done - last[0])
-        # a step that needs more iterations than this is better halved (a good one takes 3-6)
+        # a step that needs more Jacobians than this is better halved (a good one takes 1-3);
+        # each costs 11 balances, so a Jacobian is kept while it converges (chord steps)
         x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian,
-                                             max_iterations=12)
+                                             max_iterations=12, reuse_jacobian=True)
         if worst > tol and last is not None and iterations == 0:  # the extrapolation overshot: from y
             x, worst, iterations = damped_newton(balance.residual, y / balance.scale, lo, hi, tol, balance.jacobian,
-                                                 max_iterations=12)
+                                                 max_iterations=12, reuse_jacobian=True)
         if worst <= tol:
             last, y, done = (done, y), x * balance.scale, target
             if iterations <= 3:  # an easy step: the next may be longer, within the limit
