@@ -199,8 +199,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         §12), so a run does not spend seconds of simulated time settling; under combined
         or radial load, every ball in its own quasi-dynamic balance at one cage
         speed, each where its pocket carries that balance's circumferential force
-        (:func:`exudyn_bearing.solvers.quasidynamic.combined_load_state`, MODEL.md §12a; ~0.2–1.5 s
-        to solve, after which the run holds its cage speed instead of drifting for seconds).
+        (:func:`exudyn_bearing.solvers.quasidynamic.combined_load_state`, MODEL.md §12a; ~2–3 s
+        to solve under combined load, 8–16 s under a pure radial one, after which the run
+        holds its cage speed instead of drifting for seconds).
         'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
         (default): 'steady' where it applies (``Driven``/``Free`` inner race, no
         ``innerRaceDisplacement``, a load, the solve converged within
