@@ -12,8 +12,8 @@ from dataclasses import replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import ContactForces, ContactLaw, RaceContact, ball_race_forces, with_surface
-from contact.kinematics import ContactKinematics, ball_race_kinematics, cross, rotation_matrices
+from contact.ballrace import ContactLaw, RaceContact, ball_race_forces, with_surface
+from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
 from contact.lubricant import Lubricant
 from contact.surface import SurfaceModel, surface_record
 from contact.terms import term_record
