@@ -26,7 +26,51 @@ from numba import njit
 
 from .surface import SurfaceRecord, path_drop
 
-__all__ = ["ball_height", "ball_heights"]
+__all__ = ["ball_height", "ball_heights", "pit_path", "pit_paths"]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def pit_path(pit, rotation, normal, rolling, transverse, ball_radius):
+    """Where a pit (a row of ``SurfaceRecord.ball_defects``) lies on the path of one contact
+    (eq. 13.3): its direction d from the ball centre (global, (3,)), c = d·n, a = d·t1, the
+    distance of its centre from the contact along t1, r atan2(a, c) (m), and the chord ℓ (m)
+    the contact's path crosses it on; ℓ = 0 where the path misses it (its centre on the
+    ball's other half, or |across| ≥ L/2)."""
+    d = np.empty(3)
+    for r in range(3):
+        d[r] = rotation[r, 0] * pit[1] + rotation[r, 1] * pit[2] + rotation[r, 2] * pit[3]
+    c = d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]
+    a = d[0] * rolling[0] + d[1] * rolling[1] + d[2] * rolling[2]
+    if c <= 0.0:  # on the ball's other half
+        return d, c, a, 0.0, 0.0
+    e = d[0] * transverse[0] + d[1] * transverse[1] + d[2] * transverse[2]
+    half = 0.5 * pit[4]
+    across = ball_radius * math.atan2(e, c)
+    if abs(across) >= half:
+        return d, c, a, 0.0, 0.0
+    return d, c, a, ball_radius * math.atan2(a, c), 2.0 * math.sqrt(half * half - across * across)
+
+
+@njit(cache=True, error_model="numpy")
+def _pit_paths(pits, rotation, normal, rolling, transverse, ball_radius, out):
+    for i in range(pits.shape[0]):
+        for k in range(normal.shape[0]):
+            _, _, _, out[0, i, k], out[1, i, k] = pit_path(pits[i], rotation[k], normal[k], rolling[k], transverse[k],
+                                                           ball_radius)
+
+
+def pit_paths(surface: SurfaceRecord, rotation, normal, rolling, transverse, ball_radius) -> np.ndarray:
+    """:func:`pit_path` of every pit of ``surface`` at n contacts of its ball (each pit at the
+    contacts given: select them by ``ball_defects[:, 0]``): ``rotation`` (n, 3, 3), the
+    contact vectors (n, 3). Returns (2, pits, n): the distance of the pit's centre from the
+    contact along t1, m, and the chord, m (0: the path misses it)."""
+    def arr(x):
+        return np.ascontiguousarray(x, dtype=float)
+
+    out = np.empty((2, surface.ball_defects.shape[0], len(normal)))
+    _pit_paths(arr(surface.ball_defects), arr(rotation), arr(normal), arr(rolling), arr(transverse),
+               float(ball_radius), out)
+    return out
 
 
 @njit(cache=True, error_model="numpy")
@@ -45,20 +89,10 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
     for i in range(pits.shape[0]):
         if int(pits[i, 0]) != ball:
             continue
-        d = np.empty(3)
-        for r in range(3):
-            d[r] = rotation[r, 0] * pits[i, 1] + rotation[r, 1] * pits[i, 2] + rotation[r, 2] * pits[i, 3]
-        c = d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]
-        if c <= 0.0:  # on the ball's other half
+        d, c, a, along, chord = pit_path(pits[i], rotation, normal, rolling, transverse, ball_radius)
+        if chord <= 0.0:
             continue
-        a = d[0] * rolling[0] + d[1] * rolling[1] + d[2] * rolling[2]
-        e = d[0] * transverse[0] + d[1] * transverse[1] + d[2] * transverse[2]
-        half = 0.5 * pits[i, 4]
-        across = ball_radius * math.atan2(e, c)
-        if abs(across) >= half:
-            continue
-        chord = 2.0 * math.sqrt(half * half - across * across)
-        x = ball_radius * math.atan2(a, c) + 0.5 * chord
+        x = along + 0.5 * chord
         if x <= 0.0 or x >= chord:
             continue
         drop, slope = path_drop(x, chord, pits[i, 5], min(pits[i, 6], 0.5 * chord), rolling_radius)

@@ -196,7 +196,8 @@ def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
     the pit meets a race twice per turn of the ball relative to the cage, and the ball carries
     it through the load zone once per cage turn: the strongest envelope line above 50 Hz is
     2 BSF (the published 4.7135 x the shaft speed, and twice the run's own ball spin), with
-    2 BSF +- FTF and the modulation FTF itself among the strongest; BSF is weaker than 2 BSF."""
+    2 BSF +- FTF and the modulation FTF itself among the strongest; BSF is weaker than 2 BSF.
+    Its passage events follow the ball's spin and the pit's size."""
     from exudyn_bearing.studies.vibration import vibration
 
     r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.25, sample_rate=10000.0,
@@ -210,6 +211,17 @@ def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
         assert min(abs(f - want) for f in lines) < 1.0, (want, lines)
     near_bsf = [a for f, a in r.envelope_peaks if abs(f - actual["BSF"]) < 1.0]
     assert not near_bsf or max(near_bsf) < 0.8 * amp
+    # its passages (ball_defect_events): the races alternate, each meets the pit once per turn
+    # of the ball relative to the contacts (1 / BSF), and a contact crosses the 0.18-mm pit on
+    # its centre line in L / (r 2 pi BSF)
+    events = [e for e in r.defect_events if e["ball"] == 0]
+    races = [e["race"] for e in events]
+    assert len(events) >= 30 and all(a != b for a, b in zip(races, races[1:])), races
+    for race in ("inner", "outer"):
+        entries = np.array([e["entry_s"] for e in events if e["race"] == race])
+        np.testing.assert_allclose(np.diff(entries), 1.0 / actual["BSF"], rtol=2e-3)
+    crossing = 0.18e-3 / (CWRU_6205_BEARING.ball_radius * 2 * np.pi * actual["BSF"])
+    np.testing.assert_allclose([e["exit_s"] - e["entry_s"] for e in events], crossing, rtol=0.01)
 
 
 def test_ball_waviness_even_orders_vibrate_odd_orders_hardly():

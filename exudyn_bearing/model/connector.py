@@ -22,7 +22,7 @@ from ..cage import CageModel
 from ..jacobian import block_jacobian
 from ..races import Race
 from .diagnostics import ConnectorDiagnostics
-from .state import ConnectorState, first_state, per_race
+from .state import ConnectorState, both_races, first_state, per_race, stacked
 
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
 
@@ -406,6 +406,24 @@ class BearingConnector(ConnectorDiagnostics):
         react[:, :, s, 3:] -= np.einsum("bji,bzj->bzi", rot[:, s], cross(point - pos[:, s, None], force))
         return force, loss
 
+    def contact_kinematics(self, t, q, q_t):
+        """The ball–race contact kinematics of B recorded states (times ``t`` (B,) s, absolute
+        coordinates and velocities (B, 6 n_nodes)) with perfect surfaces (MODEL.md §2): a
+        ``ContactKinematics`` of B 2Z contacts (the inner race's Z first in each state), and the
+        balls' rotation matrices (B, Z, 3, 3)."""
+        pos, rot, vel, omega = self._decode_batch(q, q_t)
+        t = np.asarray(t, dtype=float)
+        frames = {name: self._race_frame(name, t, pos, vel, rot, omega) for name in ("inner", "outer")}
+        return self._kinematics(pos, vel, omega, frames), rot[:, self.layout["balls"]]
+
+    def _kinematics(self, pos, vel, omega, frames):
+        """``ball_race_kinematics`` of all B 2Z contacts, race ``frames`` from :meth:`_race_frame`."""
+        bsz, balls = pos.shape[0], self.layout["balls"]
+        grooves, signs, _ = self._contact_params(bsz)
+        st = [stacked(frames, i, shape, bsz, self.z) for i, shape in enumerate(((3,), (3, 3), (3,), (3,)))]
+        return ball_race_kinematics(both_races(pos[:, balls]), both_races(vel[:, balls]), both_races(omega[:, balls]),
+                                    *st, grooves, self.bearing.ball_radius, signs)
+
     def _numpy_forces(self, t, pos, rot, vel, omega, surface=True):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of
         the compiled path), before applied loads and held races; ``surface=False`` without
@@ -419,22 +437,14 @@ class BearingConnector(ConnectorDiagnostics):
         react_f = np.zeros((bsz, z, n_nodes, 3))
         react_t = np.zeros((bsz, z, n_nodes, 3))
         frames = {name: self._race_frame(name, t, pos, vel, rot, omega) for name in ("inner", "outer")}
-
-        def stacked(i, shape):  # (B, 2Z, ...) -> (B 2Z, ...): inner contacts, then outer, per state
-            per_race = [np.broadcast_to(frames[name][i][:, None], (bsz, z) + shape) for name in ("inner", "outer")]
-            return np.concatenate(per_race, axis=1).reshape((-1,) + shape)
-
-        def both(x):
-            return np.concatenate([x, x], axis=1).reshape(-1, 3)
-
-        grooves, signs, params = self._contact_params(bsz)
-        kin_all = ball_race_kinematics(both(c), both(v), both(w), stacked(0, (3,)), stacked(1, (3, 3)),
-                                       stacked(2, (3,)), stacked(3, (3,)), grooves, self.bearing.ball_radius, signs)
+        kin_all = self._kinematics(pos, vel, omega, frames)
+        params = self._contact_params(bsz)[2]
         if surface and self.surface is not None:  # stage 0 of the per-contact terms (MODEL.md §13)
             pits = {}
             if self.terms.surface.material:  # a ball's own surface: where its material is (eq. 13.3, 13.6)
                 pits = dict(ball_rotation=np.concatenate([rot[:, balls]] * 2, axis=1).reshape(-1, 3, 3),
-                            ball_omega=both(w), race_axis=stacked(1, (3, 3))[:, :, 2], race_omega=stacked(3, (3,)))
+                            ball_omega=both_races(w), race_axis=stacked(frames, 1, (3, 3), bsz, z)[:, :, 2],
+                            race_omega=stacked(frames, 3, (3,), bsz, z))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
                                    self.bearing.ball_diameter, self.bearing.pitch_diameter, **pits)
         frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)

@@ -1,5 +1,6 @@
 """What an evaluation of the bearing connector computed, for one node state or a batch of
-them (MODEL.md §2–§8, §11): :class:`ConnectorState` and its slicing."""
+them (MODEL.md §2–§8, §11): :class:`ConnectorState`, its slicing, and the layout of a batch's
+contacts (B 2Z of them: per state the inner race's Z, then the outer race's)."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields, replace
@@ -9,7 +10,7 @@ import numpy as np
 from contact.ballrace import ContactForces
 from contact.kinematics import ContactKinematics
 
-__all__ = ["ConnectorState", "per_race", "first_state"]
+__all__ = ["ConnectorState", "per_race", "first_state", "stacked", "both_races"]
 
 
 @dataclass
@@ -73,3 +74,15 @@ def first_state(state: ConnectorState) -> ConnectorState:
             return _take(value, 0)
         return float(np.reshape(value, -1)[0]) if name in _SCALAR_FIELDS else value[0]
     return replace(state, **{f.name: one(f.name, getattr(state, f.name)) for f in fields(state)})
+
+
+def stacked(frames, i, shape, bsz, z):
+    """Item ``i`` of both race frames, (B, ...) each, per contact: (B 2Z, ...), the inner
+    race's Z contacts first in each state."""
+    per_race = [np.broadcast_to(frames[name][i][:, None], (bsz, z) + shape) for name in ("inner", "outer")]
+    return np.concatenate(per_race, axis=1).reshape((-1,) + shape)
+
+
+def both_races(x):
+    """Per-ball vectors (B, Z, 3) per contact, (B 2Z, 3): inner, then outer, in each state."""
+    return np.concatenate([x, x], axis=1).reshape(-1, 3)

@@ -19,7 +19,8 @@ from ..bearing import Bearing
 from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
-           "envelope_spectrum", "spectral_peaks", "defect_events", "VibrationResult", "vibration"]
+           "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "VibrationResult",
+           "vibration"]
 
 #: the fault frequencies, in the order printed
 FAULTS = ("BPFO", "BPFI", "BSF", "FTF")
@@ -122,8 +123,8 @@ def defect_events(results, bearing: Bearing, surface) -> list:
 
     The contact's azimuth in the race frame is the ball's azimuth minus the race's turned angle
     (the time integral of its recorded speed); edge crossings are interpolated between
-    recorded states. A pit on a ball has no events here (the results do not record the
-    balls' orientations)."""
+    recorded states. A pit on a ball has its events from the recorded states:
+    :func:`ball_defect_events`."""
     t = np.asarray(results.time)
     psi = np.unwrap(results.ball_position_angle, axis=0)
     turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
@@ -145,6 +146,50 @@ def defect_events(results, bearing: Bearing, surface) -> list:
                     if later:
                         events.append({"defect": i, "ball": j, "entry_s": entry, "exit_s": later[0]})
     return sorted(events, key=lambda e: e["entry_s"])
+
+
+def ball_defect_events(connector, time, q, q_t) -> list:
+    """Each ball pit's passages under its ball's two contacts (MODEL.md eq. 13.3): [{"defect":
+    index in the surface's defects, "ball": j, "race": "inner" | "outer", "entry_s": the
+    contact reaches the pit's first edge on its path, "exit_s": it leaves the second}], in
+    time order. From the recorded states (``time`` (T,) s, absolute coordinates and velocities
+    (T, 6 n_nodes), e.g. ``handle.States(mbs)``): the pit's centre's distance from the contact
+    along its path (:func:`contact.ball_surface.pit_paths`) against half the chord it crosses
+    the pit on, interpolated between states."""
+    from contact.ball_surface import pit_paths
+
+    surface, record = connector.surface, connector.terms.surface
+    pits = [i for i, d in enumerate(surface.defects if surface is not None else ()) if d.race == "ball"]
+    if not pits:
+        return []
+    time = np.asarray(time, dtype=float)
+    kin, rot = connector.contact_kinematics(time, q, q_t)
+    frames = [v.reshape(len(time), 2, connector.z, 3) for v in (kin.normal, kin.rolling, kin.transverse)]
+    events = []
+    for row, i in enumerate(pits):  # the record's pit rows follow the surface's ball defects
+        j = surface.defects[i].ball
+        for k, race in enumerate(("inner", "outer")):
+            along, chord = pit_paths(record, rot[:, j], *(f[:, k, j] for f in frames),
+                                     connector.bearing.ball_radius)[:, row]
+            u = np.where(chord > 0.0, along / np.where(chord > 0.0, 0.5 * chord, 1.0), np.nan)
+            events += [{"defect": i, "ball": j, "race": race, "entry_s": a, "exit_s": b}
+                       for a, b in _passages(time, u)]
+    return sorted(events, key=lambda e: e["entry_s"])
+
+
+def _passages(t, u):
+    """(entry, exit) times where u (the position over a defect in its half-lengths, NaN off
+    its path) passes through [-1, 1]: each crossing of an edge towards the inside enters, one
+    towards the outside exits; crossings interpolated linearly between samples."""
+    crossings = []
+    for level in (-1.0, 1.0):
+        s = u - level
+        k = np.flatnonzero(np.isfinite(s[:-1]) & np.isfinite(s[1:]) & (np.signbit(s[:-1]) != np.signbit(s[1:])))
+        for i in k:
+            inward = (u[i + 1] - u[i]) * level < 0.0  # moving from beyond this edge towards the middle
+            crossings.append((float(t[i] + (t[i + 1] - t[i]) * s[i] / (s[i] - s[i + 1])), inward))
+    crossings.sort()
+    return [(a, b) for (a, into), (b, out) in zip(crossings, crossings[1:]) if into and not out]
 
 
 def _integral(t, rate):
@@ -270,7 +315,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
-    events = defect_events(results, bearing, surface) if surface.defects else []
+    events = sorted(defect_events(results, bearing, surface) + ball_defect_events(handle.connector, *handle.States(mbs)),
+                    key=lambda e: e["entry_s"]) if surface.defects else []
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
