@@ -12,7 +12,8 @@ Two modes:
 ``fixed-angle``
     The paper's P4–P6: every ball keeps the free contact angle a0, the ball load is
     K_eff delta^(3/2) with delta projected on the fixed contact line, and half the
-    centrifugal force, projected on that line, is subtracted in the inner-race balance.
+    centrifugal force, projected on that line, is subtracted in the inner-race balance
+    (:mod:`exudyn_bearing.solvers.fixed_angle`).
 
 Frames: bearing axis z, the radial force acts along +x on the inner race, the axial
 force along +z (towards the side that loads the inner contacts), ball j sits at
@@ -27,12 +28,12 @@ from dataclasses import dataclass, asdict
 import numpy as np
 
 from contact import geometry
-from contact.hertz import effective_ball_stiffness
 from ..bearing import Bearing
 from ..errors import QuasiStaticError
 from ..jacobian.differences import central_jacobian
 from ..renamed import accepts_old_names
 from ..results.records import units_of
+from .fixed_angle import fixed_angle_balance
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
 
@@ -246,71 +247,6 @@ class _Geometric:
         return f.sum(axis=0), np.cross(points, f).sum(axis=0)
 
 
-def _radial_hint(axial, radial, alpha, hold_axial) -> str:
-    """Why a single-row angular-contact bearing may have no equilibrium: a radial load
-    induces an axial force ~1.25 F_r tan(a) that the axial load must hold."""
-    if hold_axial or radial <= 0 or axial >= 1.25 * radial * math.tan(alpha):
-        return ""
-    return (f"; radial={radial:g} N needs about axial >= 1.25 radial tan(a0) = "
-            f"{1.25 * radial * math.tan(alpha):.0f} N on a single angular-contact bearing "
-            f"(axial={axial:g} N): the radial load's induced axial force pushes the races apart")
-
-
-def _fixed_angle(bearing: Bearing, axial, radial, centrifugal, hold_axial, method, tol, max_iter):
-    """Paper P4–P6 with fixed contact angle a0 (translations only)."""
-    z, alpha = bearing.balls, bearing.contact_angle
-    psi = 2.0 * np.pi * np.arange(z) / z
-    e = np.stack([np.cos(psi) * math.cos(alpha), np.sin(psi) * math.cos(alpha), np.full(z, math.sin(alpha))], axis=1)
-    k_i = bearing.hertz(alpha, "inner", method).stiffness
-    k_o = bearing.hertz(alpha, "outer", method).stiffness
-    k_eff = float(effective_ball_stiffness(k_i, k_o))
-    free = [0, 1] if hold_axial else [0, 1, 2]
-    target = np.array([radial, 0.0, axial])
-    fc_line = 0.5 * centrifugal * math.cos(alpha)  # P6: 1/2 m r_p w_c² cos(beta)
-
-    def residual(x):
-        delta = e @ x
-        q = k_eff * np.maximum(delta, 0.0) ** 1.5
-        loaded = delta > 0
-        force = ((q - fc_line) * loaded) @ e
-        dq = 1.5 * k_eff * np.sqrt(np.maximum(delta, 0.0))
-        jac = (e * dq[:, None]).T @ e
-        return force - target, jac, q, delta
-
-    # start: every ball loaded by the axial force, the radial one as Stribeck's 5 F_r/(Z cos a)
-    q0 = (axial / (z * math.sin(alpha)) if axial > 0 else 0.0) + fc_line
-    x = np.zeros(3)
-    x[2] = 0.0 if hold_axial else (max(q0, 1e-3) / k_eff) ** (2 / 3) / math.sin(alpha)
-    if radial > 0:
-        x[0] = (5 * radial / (z * math.cos(alpha) * k_eff)) ** (2 / 3) / math.cos(alpha)
-    scale = max(axial, radial, 1.0)
-    for it in range(max_iter):
-        res, jac, q, delta = residual(x)
-        if np.linalg.norm(res[free]) < tol * scale:
-            break
-        try:
-            step = np.linalg.solve(jac[np.ix_(free, free)], -res[free])
-        except np.linalg.LinAlgError:
-            raise QuasiStaticError("fixed-angle solve: no ball in contact (singular Jacobian)"
-                                   + _radial_hint(axial, radial, alpha, hold_axial)) from None
-        lam, norm0 = 1.0, np.linalg.norm(res[free])
-        for _ in range(40):
-            trial = x.copy()
-            trial[free] += lam * step
-            if np.linalg.norm(residual(trial)[0][free]) < norm0 * (1 - 1e-4 * lam):
-                break
-            lam *= 0.5
-        x = trial
-    else:
-        raise QuasiStaticError(f"fixed-angle Newton–Raphson did not converge in {max_iter} iterations "
-                               f"(residual {np.linalg.norm(res[free]):.3g} N)"
-                               + _radial_hint(axial, radial, alpha, hold_axial))
-    res, jac, q, delta = residual(x)
-    q_inner = np.where(q > 0, np.maximum(q - fc_line, 0.0), 0.0)  # below fc_line the ball leaves the inner race
-    q_outer = np.where(q > 0, q + fc_line, 0.0)
-    return x, q_inner, q_outer, (q_inner / k_i) ** (2 / 3), (q_outer / k_o) ** (2 / 3), it, k_eff, delta
-
-
 #: Free contact angles up to this (rad) are deep-groove bearings: both shoulders are high, so
 #: a radial load alone is carried with the grooves centred (contact angles near zero). Above
 #: it the bearing is an angular-contact one, whose low shoulder the full-groove model does
@@ -428,7 +364,7 @@ def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_f
     if mode == "fixed-angle":
         if moment is not None:
             raise ValueError("moment: the fixed-angle mode (paper P4) has no tilt; use mode='geometric'")
-        x, qi, qo, di, do, it, k_eff, delta = _fixed_angle(bearing, axial_force, radial_force, centrifugal, hold_axial,
+        x, qi, qo, di, do, it, k_eff, delta = fixed_angle_balance(bearing, axial_force, radial_force, centrifugal, hold_axial,
                                                            hertz_method, tol, max_iter)
         alpha = np.full(z, bearing.contact_angle)
         zeros = np.zeros(z)
@@ -455,7 +391,7 @@ def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_f
         offsets, con, _ = model.solve_balls(x)
     elif axial_force > 0 or hold_axial:
         try:
-            x[:3] = _fixed_angle(bearing, axial_force, radial_force, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+            x[:3] = fixed_angle_balance(bearing, axial_force, radial_force, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
         except (QuasiStaticError, ZeroDivisionError):
             # fixed angles cannot carry this radial load (or there is no free angle: zero
             # clearance), full grooves may: start centred and let the geometric balance move
