@@ -211,10 +211,8 @@ class BearingConnector(ConnectorDiagnostics):
         the outputs of a finished run: the states are not checked as :meth:`forces` does."""
         t = np.asarray(t, dtype=float)
         pos, rot, vel, omega = self._decode_batch(q, q_t)
-        _, react, parts = self._numpy_forces(t, pos, rot, vel, omega)
-        friction = self._add_pocket_friction(parts[2], pos, rot, vel, omega, np.zeros_like(react[:, 0]), react) \
-            if self.cage.pocket_friction > 0 else None
-        return self._state(t, pos, rot, vel, omega, None, (*parts, friction))
+        _, _, parts = self._numpy_forces(t, pos, rot, vel, omega)
+        return self._state(t, pos, rot, vel, omega, None, parts)
 
     def _decode_batch(self, q, q_t):
         """:meth:`decode` for B states (B, 6 n_nodes), with GLOBAL angular velocities."""
@@ -275,9 +273,9 @@ class BearingConnector(ConnectorDiagnostics):
         """Forces for a batch of B node states (leading axis; omega GLOBAL): per-slot forces
         without the ball-caused race/cage parts (B, n_nodes, 6), the per-ball contributions
         to the race/cage slots (B, Z, n_nodes, 6), penetration (m) and normal load (N) of
-        each contact (B, 2, Z; inner race first), and, from the numpy path, (kinematics,
-        forces, cage force, drag force, race angular velocities) of all B 2Z contacts (None
-        from the compiled path, which is used unless ``details`` are asked for).
+        each contact (B, 2, Z; inner race first), and, from the numpy path, the parts of
+        :meth:`_numpy_forces` (None from the compiled path, which is used unless ``details``
+        are asked for).
         ``same_contacts`` (compiled path): bool (B,) or (B, 2), states (per race) whose
         ball–race contacts equal state 0's (see :class:`exudyn_bearing.model.compiled.CompiledForces`).
         ``raw_reactions``: a dict with ``slots``, which receives ``react`` of those slots
@@ -293,10 +291,6 @@ class BearingConnector(ConnectorDiagnostics):
             load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
         if self.guide is not None:
             self._add_land_force(t, pos, rot, vel, omega, out)
-        if parts is not None:  # the numpy path (the compiled kernels add the pocket friction themselves)
-            friction = self._add_pocket_friction(parts[2], pos, rot, vel, omega, out, react) \
-                if self.cage.pocket_friction > 0 else None
-            parts = (*parts, friction)
         if self.layout["inner"] is not None:
             out[:, self.layout["inner"], :3] += self.applied_force(t)
         if raw_reactions is not None:
@@ -426,8 +420,9 @@ class BearingConnector(ConnectorDiagnostics):
 
     def _numpy_forces(self, t, pos, rot, vel, omega, surface=True):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of
-        the compiled path), before applied loads and held races; ``surface=False`` without
-        the surfaces."""
+        the compiled path), before the guiding land, applied loads and held races;
+        ``surface=False`` without the surfaces. Returns (out, react, (kinematics, forces, cage
+        force, drag force, race angular velocities, pocket friction or None))."""
         bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
         balls = self.layout["balls"]
         c, v, w = pos[:, balls], vel[:, balls], omega[:, balls]
@@ -481,8 +476,11 @@ class BearingConnector(ConnectorDiagnostics):
         react = np.empty((bsz, z, n_nodes, 6))
         react[..., :3] = react_f
         react[..., 3:] = np.einsum("bnji,bznj->bzni", rot, react_t)
+        # (the compiled kernels add the pocket friction themselves)
+        friction = self._add_pocket_friction(cage_force, pos, rot, vel, omega, out, react) \
+            if self.cage.pocket_friction > 0 else None
         return out, react, (kin_all, frc_all, cage_force, drag_force,
-                            {name: fr[3] for name, fr in frames.items()})
+                            {name: fr[3] for name, fr in frames.items()}, friction)
 
     def jacobian(self, t, q, q_t, f_q, f_qt, **steps):
         """Block finite-difference Jacobian for Exudyn's ``jacobianUserFunction``

@@ -315,8 +315,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
-    events = sorted(defect_events(results, bearing, surface) + ball_defect_events(handle.connector, *handle.States(mbs)),
-                    key=lambda e: e["entry_s"]) if surface.defects else []
+    events = defect_events(results, bearing, surface) if surface.defects else []
+    if any(d.race == "ball" for d in surface.defects):  # a pit's passages: from the balls' recorded rotations
+        events = sorted(events + ball_defect_events(handle.connector, *handle.States(mbs)), key=lambda e: e["entry_s"])
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
