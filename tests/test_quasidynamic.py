@@ -55,12 +55,13 @@ def _pocket_forces_at_start(mbs, handle):
     return handle.connector.evaluate(0.0, q[idx] + handle.connector.reference, q_t[idx], details=True).cage_force
 
 
-def test_auto_takes_the_combined_start_and_loads_the_pockets():
+def test_auto_takes_the_combined_start_and_loads_the_pockets(monkeypatch):
     """'auto' starts combined loads from the quasi-dynamic state, whether the axial load alone
     skids (400 N + 100 N: ~71 % slip) or not (2.2 kN + 2 kN); a continuation given too few
     steps says so. Each ball starts where its pocket pushes it with the balance's
     circumferential force P_j (to 0.1 %), not at the pocket centre (where it would push
-    nothing and the balls would start ringing in their pockets)."""
+    nothing and the balls would start ringing in their pockets). A budget too small for the
+    path stops before its first solve."""
     import exudyn as exu
 
     from exudyn_bearing import CreateAngularContactBearing
@@ -76,10 +77,20 @@ def test_auto_takes_the_combined_start_and_loads_the_pockets():
         assert np.max(np.abs(state.pocket_force)) > 0.5
         np.testing.assert_allclose(circumferential, state.pocket_force, rtol=0,
                                    atol=1e-3 * np.max(np.abs(state.pocket_force)))
+    # 300 N radial in steps of at most 40 N (a tenth of the axial load) takes at least 8: a
+    # budget of 2 stops before the first solve; pure radial load adds 4 steps back to no axial load
+    from exudyn_bearing.solvers import quasidynamic
+
+    solves = []
+    newton = quasidynamic.damped_newton
+    monkeypatch.setattr(quasidynamic, "damped_newton", lambda *a, **k: solves.append(1) or newton(*a, **k))
     short = combined_load_state(B, REFERENCE_LUBRICANT, axial_force=400.0, radial_force=300.0, rpm=1800.0,
-                                ball_drag=REFERENCE_DRAG,
-                                max_steps=2)
-    assert not short.converged and "steps ran out" in short.message
+                                ball_drag=REFERENCE_DRAG, max_steps=2)
+    assert not short.converged and "steps ran out" in short.message and "needs at least 8," in short.message
+    radial = combined_load_state(B, REFERENCE_LUBRICANT, axial_force=0.0, radial_force=300.0, rpm=1800.0,
+                                 ball_drag=REFERENCE_DRAG, max_steps=10, max_step=30.0)
+    assert not radial.converged and "needs at least 14," in radial.message
+    assert not solves
 
 
 def test_pure_radial_start_balances_every_ball():

@@ -200,8 +200,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         or radial load, every ball in its own quasi-dynamic balance at one cage
         speed, each where its pocket carries that balance's circumferential force
         (:func:`exudyn_bearing.solvers.quasidynamic.combined_load_state`, MODEL.md §12a; ~2–3 s
-        to solve under combined load, 8–16 s under a pure radial one, after which the run
-        holds its cage speed instead of drifting for seconds).
+        to solve under combined load, up to 8–16 s under a pure radial one, after which the run
+        holds its cage speed instead of drifting for seconds; a path longer than the budget
+        below is not started).
         'rolling': the quasi-static position with pure-rolling speeds (see Notes). 'auto'
         (default): 'steady' where it applies (``Driven``/``Free`` inner race, no
         ``innerRaceDisplacement``, a load, the solve converged within

@@ -219,6 +219,10 @@ def spectral_derivative(n: int) -> np.ndarray:
 RADIAL_SEED_FRACTION = 0.1
 
 
+#: the seed's axial load is taken back to zero in at least this many steps
+RETURN_STEPS = 4
+
+
 def seed_axial_load(axial: float, radial: float) -> float:
     """The axial load, N, whose steady state the continuation starts from: ``axial`` itself,
     or :data:`RADIAL_SEED_FRACTION` of the radial load where there is no axial load."""
@@ -251,11 +255,12 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
     make = lambda load, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
                                               *load, cage_offset=offset)
     largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
+    pure_radial = axial_force <= 0 < abs(radial_force)
     y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps,
-                                                 _load_text)
-    if message is None and axial_force <= 0 < abs(radial_force):
-        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force), 0.25 * seed,
-                                                     tol, left, _load_text)
+                                                 _load_text, reserve=RETURN_STEPS if pure_radial else 0)
+    if message is None and pure_radial:
+        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force),
+                                                     seed / RETURN_STEPS, tol, left, _load_text)
     if balance is None:  # no load step: the steady state itself
         balance = make((axial_force, 0.0))
     if message is None:
@@ -403,13 +408,14 @@ def _seat_cage(make, point, y, cage, tol, worst, max_rounds=10):
     return centred
 
 
-def _continue(make, y, start, end, largest, tol, steps_left, describe):
+def _continue(make, y, start, end, largest, tol, steps_left, describe, reserve=0):
     """Continuation of the unscaled unknowns ``y`` along the straight path from ``start`` to
     ``end`` (vectors of loads in N, or of a pose in m; ``make(point)`` builds the balance
     there, ``describe(point)`` names it) in steps of at most ``largest`` (same unit), halved
     where Newton fails (stalled below 1/100 of ``largest``), doubled back after an easy step,
-    at most ``steps_left`` steps (None: no limit). Returns (y, worst residual, None or why it
-    stopped, the last balance, steps left)."""
+    at most ``steps_left`` steps (None: no limit), of which ``reserve`` are needed after this
+    path: it stops as soon as the rest cannot be covered in the steps left, even at ``largest``.
+    Returns (y, worst residual, None or why it stopped, the last balance, steps left)."""
     start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     span = float(np.linalg.norm(end - start))
     if span == 0.0:
@@ -419,8 +425,11 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe):
     last = None  # (path parameter, state) of the step before, for the secant predictor
     while done < 1.0:
         if steps_left is not None:
-            if steps_left <= 0:
-                return y, worst, f"continuation stopped: its steps ran out at {describe(at(done))}", balance, steps_left
+            # the fewest steps the rest takes: a budget that cannot cover them is spent in vain
+            need = max(1, math.ceil((1.0 - done) * span / largest - 1e-9)) + reserve
+            if steps_left < need:
+                return y, worst, (f"continuation stopped: its steps ran out at {describe(at(done))} (the rest "
+                                  f"of the path needs at least {need}, {steps_left} are left)"), balance, steps_left
             steps_left -= 1
         target = min(done + step, 1.0)
         balance = make(at(target))
