@@ -32,7 +32,8 @@ def main(quick: bool) -> None:
           f"{time.perf_counter() - t0:.1f} s; envelope line {r.envelope_peaks[0][0]:.2f} Hz "
           f"({r.envelope_peaks[0][1]:.4g} m/s^2), actual BPFO {r.fault_frequencies['actual']['BPFO']:.3f} Hz, "
           f"{len(r.defect_events)} passages; step {r.solver['step_s']:g} s, {r.solver['steps']} steps "
-          f"({r.solver['step_cuts']} beyond the plan)", flush=True)
+          f"({r.solver['extra_steps']} beyond the plan; {r.solver['step_cuts']} step cuts, after "
+          f"{r.solver['passages_cut']} of the {r.solver['passages']} passages)", flush=True)
     base, amplitudes = None, {}
     for div in (1, 2, 4) if quick else (1, 2, 4, 8, 16):
         step = 5e-5 / div
@@ -41,7 +42,7 @@ def main(quick: bool) -> None:
         f, a = r.envelope_peaks[0]
         change = "" if base is None else f"; change {100 * (a - base) / base:+.2f} % of the amplitude"
         print(f"2. step {step * 1e6:.1f} us: envelope line {f:.3f} Hz, {a:.5g} m/s^2, run {r.wall_time_s:.1f} s, "
-              f"{r.solver['step_cuts']} steps beyond the plan{change}", flush=True)
+              f"{r.solver['extra_steps']} steps beyond the plan, {r.solver['step_cuts']} cuts{change}", flush=True)
         base = amplitudes[step] = a
     finest = min(amplitudes)
     for step, a in amplitudes.items():  # the half-step change against the error to the finest step

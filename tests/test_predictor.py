@@ -177,3 +177,31 @@ def test_first_step_is_predicted_only_from_a_steady_start():
         steps[force_steady] = (info.steps, predictor.shifts)
     assert steps[False] == (6, 4)  # Exudyn counts the start as a step
     assert steps[True][0] > 6
+
+
+@pytest.mark.parametrize("predict", [True, False])
+def test_step_cuts_are_counted_as_exudyn_logs_them(tmp_path, predict):
+    """The cut counter (RunInfo.cut_times) against Exudyn's own solver log: the CWRU 6205 from
+    pure rolling under 300 N radial fails its first steps (the rolling start's transients),
+    and every 'convergence failed' line of the log is one cut, at the failed attempt's end
+    time; counted whether or not the predictor shifts Newton's start."""
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import CWRU_6205_BEARING
+
+    mbs = exu.SystemContainer().AddSystem()
+    CreateAngularContactBearing(mbs, CWRU_6205_BEARING, innerRace=races.Driven(1797.0), outerRace=races.Housing(),
+                                radialForce=300.0, initialState="rolling", show=False,
+                                surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),)))
+    mbs.Assemble()
+    mbs.variables[VARIABLE].enabled = predict
+    s = exu.SimulationSettings()
+    s.timeIntegration.numberOfSteps, s.timeIntegration.endTime = 40, 1e-3
+    s.timeIntegration.newton.relativeTolerance = 1e-4
+    s.timeIntegration.verboseModeFile = 2
+    s.solution.solverInformationFileName = str(tmp_path / "solver.txt")
+    s.solution.file.write = False
+    info = run_solver(mbs, [], 1e-3, s)
+    logged = [float(line.rsplit("time =", 1)[1]) for line in (tmp_path / "solver.txt").read_text().splitlines()
+              if "convergence failed" in line]
+    assert len(logged) >= 2
+    np.testing.assert_allclose(info.cut_times, logged, rtol=1e-5)

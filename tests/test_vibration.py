@@ -318,6 +318,20 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     # R_x = r (d_m + D) / d_m = 4.777 mm at the outer race: s(0.09 mm) = 0.848 um
     assert "a ball reaches 0.85 um of its 280 um depth" in text.stdout
     assert "BPFO" in text.stdout
+    solver = data["solver"]
+    assert solver["step_cuts"] == len(solver["cut_times_s"]) and 0 <= solver["passages_cut"] <= solver["passages"]
+    assert solver["passages"] == len(events) and f"{solver['step_cuts']} step cuts" in text.stdout
+
+
+def test_passages_cut_counts_the_passages_a_cut_follows():
+    """A cut belongs to the passage whose entry it follows most closely; cuts before the first
+    passage (the start) belong to none."""
+    from exudyn_bearing.studies.vibration import passages_cut
+
+    events = [{"entry_s": 0.010}, {"entry_s": 0.020}, {"entry_s": 0.030}, {"entry_s": 0.040}]
+    assert passages_cut(events, [1e-5, 2e-5, 0.0101, 0.0102, 0.0305, 0.045]) == 3
+    assert passages_cut(events, [0.005]) == 0 and passages_cut(events, []) == 0 and passages_cut([], [0.1]) == 0
+    assert passages_cut(events[::-1], [0.0399]) == 1  # events in any order
 
 
 def test_vibration_sensors_on_your_own_housing_body():

@@ -106,13 +106,17 @@ def compose_rotation_vectors(theta, omega):
 class NewtonPredictor:
     """Exudyn ``PreNewtonResidualUserFunction`` that replaces the first Newton iterate of
     each implicit step by the constant-acceleration state of the bearings' nodes (module
-    docstring). ``enabled`` False leaves Exudyn's iteration untouched."""
+    docstring). ``enabled`` False leaves Exudyn's iteration untouched. Enabled or not, it
+    counts the steps Newton failed and Exudyn tried again at a shorter step (``cut_times``:
+    the end time s of each failed attempt)."""
 
     def __init__(self, chained=None):
         self.nodes: list[int] = []
         self.enabled = True
         self.chained = chained
         self.shifts = 0
+        self.cut_times: list[float] = []
+        self._attempt = (None, -math.inf)  # (solver, end time) of the last step attempt
         self._indices = None
         self._pending = None
         self._solver = self._constants = None
@@ -142,6 +146,8 @@ class NewtonPredictor:
     def __call__(self, mbs, t, newtonIt, discontinuousIt):
         if self.chained is not None:
             self.chained(mbs, t, newtonIt, discontinuousIt)
+        if newtonIt == 0:
+            self._count_cut(mbs, t)
         if not self.enabled or not self.nodes:
             return
         if newtonIt == 0:
@@ -169,6 +175,15 @@ class NewtonPredictor:
             self.shifts += 1
         else:
             self._pending = None
+
+    def _count_cut(self, mbs, t):
+        """A step attempt that ends before the last one of the same solve follows a failed
+        one: Exudyn retries a step from its start with a shorter step after Newton fails."""
+        solver, end = mbs.sys.get("dynamicSolver"), float(t)
+        last_solver, last_end = self._attempt
+        if solver is last_solver and end < last_end - 1e-12 * max(1.0, abs(end)):
+            self.cut_times.append(last_end)
+        self._attempt = (solver, end)
 
     def _predict(self, mbs, t):
         """The full (q, v, a) vectors with the bearings' nodes at their constant-acceleration

@@ -169,6 +169,9 @@ class RunInfo:
     jacobian_updates: int | None = None
     #: CPU time of the process over the run (all threads), s: the cost beside the wall time
     cpu_time_s: float | None = None
+    #: end times, s, of the steps Newton failed and the solver tried again at a shorter step
+    #: (implicit solvers of a scene with a bearing; None where not counted)
+    cut_times: tuple | None = None
 
 
 def _exudyn_settings(settings: SolverSettings, end_time: float):
@@ -268,6 +271,7 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     predicting = getattr(predictor, "enabled", None)
     if predictor is not None:
         predictor.enabled = settings.predictor
+    counted = len(predictor.cut_times) if predictor is not None else 0
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
     start, cpu = _time.perf_counter(), _time.process_time()
@@ -293,7 +297,8 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     sol = mbs.sys.get("dynamicSolver")
     it = getattr(sol, "it", None)
     info = RunInfo(asdict(settings), wall, int(getattr(it, "currentStepIndex", 0) or s.timeIntegration.numberOfSteps),
-                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu)
+                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu,
+                   tuple(predictor.cut_times[counted:]) if predictor is not None and settings.implicit else None)
     if not ok:
         raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
                                      f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
@@ -317,6 +322,9 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
     ti.numberOfSteps = max(1, int(round(end_time / step)))
     for h in handles:
         h.connector.first_non_finite = None
+    predictor = mbs.variables.get(PREDICTOR_VARIABLE)
+    counted = len(predictor.cut_times) if predictor is not None else 0
+    implicit = ti.solverType in (exu.DynamicSolverType.GeneralizedAlpha, exu.DynamicSolverType.TrapezoidalIndex2)
     start, cpu = _time.perf_counter(), _time.process_time()
     try:
         ok = exu.SolveDynamic(mbs, s)
@@ -326,7 +334,8 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
     it = getattr(mbs.sys.get("dynamicSolver"), "it", None)
     info = RunInfo({"solver": str(ti.solverType), "step": step, "user_settings": True}, wall,
                    int(getattr(it, "currentStepIndex", 0) or ti.numberOfSteps),
-                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu)
+                   getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu,
+                   tuple(predictor.cut_times[counted:]) if predictor is not None and implicit else None)
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not ok or not np.all(np.isfinite(q)):
         raise BearingSimulationError(f"exu.SolveDynamic did not finish (step {step:g} s){_where(handles, mbs)}")

@@ -19,7 +19,7 @@ from ..bearing import Bearing
 from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
-           "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "VibrationResult",
+           "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
            "vibration"]
 
 #: the fault frequencies, in the order printed
@@ -177,6 +177,18 @@ def ball_defect_events(connector, time, q, q_t) -> list:
     return sorted(events, key=lambda e: e["entry_s"])
 
 
+def passages_cut(events, cut_times) -> int:
+    """How many of the defect passages ``events`` (dicts with ``entry_s``) are followed by a
+    step cut (``cut_times``, s: end times of failed step attempts) before the next passage's
+    entry (any defect; the last one's up to the end of the run; MODEL.md §13c). A strike's
+    cut falls after its exit, in the ringing it starts (~0.1 ms on the CWRU notch)."""
+    cuts = np.sort(np.asarray(cut_times, dtype=float))
+    entries = np.sort([float(e["entry_s"]) for e in events])
+    bounds = np.append(entries, np.inf)
+    return int(sum(np.searchsorted(cuts, b, side="left") > np.searchsorted(cuts, a, side="left")
+                   for a, b in zip(bounds[:-1], bounds[1:])))
+
+
 def _passages(t, u):
     """(entry, exit) times where u (the position over a defect in its half-lengths, NaN off
     its path) passes through [-1, 1]: each crossing of an edge towards the inside enters, one
@@ -222,7 +234,8 @@ class VibrationResult:
     wall_time_s: float
     inputs: dict
     results: object = field(repr=False, default=None)  #: the bearing's BearingResults
-    #: step s, steps taken, step cuts (steps beyond time / step), Newton iterations
+    #: step s, steps taken, extra_steps (beyond time / step), step_cuts (failed steps tried again
+    #: shorter) and their cut_times_s, passages and passages_cut (followed by a cut), Newton iterations
     solver: dict = field(default_factory=dict)
     error_estimate: dict | None = None  #: see :func:`vibration`
 
@@ -235,7 +248,7 @@ class VibrationResult:
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
-                          "solver": "step_s s; counts", "error_estimate": "Hz, %, pp, s",
+                          "solver": "step_s, cut_times_s in s; counts", "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
@@ -324,7 +337,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
                           float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results,
-                          {"step_s": step, "steps": int(info.steps), "step_cuts": int(info.steps) - int(round(time / step)),
+                          {"step_s": step, "steps": int(info.steps), "extra_steps": int(info.steps) - int(round(time / step)),
+                           "step_cuts": len(info.cut_times), "cut_times_s": [float(c) for c in info.cut_times],
+                           "passages_cut": passages_cut(events, info.cut_times), "passages": len(events),
                            "newton_iterations": int(info.newton_iterations),
                            "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
