@@ -97,13 +97,22 @@ def test_pure_radial_start_balances_every_ball():
     """Pure radial load (the README's deep-groove bearing, 10 um clearance, 2.5 kN, 3000 rpm)
     starts from the quasi-dynamic state continued from a seed axial load and taken back to
     zero: the inner race moves along the load, the cage's pocket forces are in torque balance
-    (a free cage) and the cage turns at the kinematic speed of a rolling bearing."""
-    from exudyn_bearing import Bearing
+    (a free cage) and the cage turns at the kinematic speed of a rolling bearing. The 'auto'
+    start (its step budget and stall check, steps of an eighth of the load) reaches the same
+    balance."""
+    from contact.ballrace import ContactLaw
+    from exudyn_bearing import Bearing, races
+    from exudyn_bearing.solvers.start import steady_start
 
     deep = Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3, pitch_diameter=43.5e-3,
                                   inner_conformity=5.772 / 11.1, outer_conformity=5.883 / 11.1)
     state = combined_load_state(deep, REFERENCE_LUBRICANT, axial_force=0.0, radial_force=2500.0, rpm=3000.0,
                                 ball_drag=REFERENCE_DRAG)
+    auto = steady_start(deep, REFERENCE_LUBRICANT, "auto", axial_force=0.0, radial_force=2500.0, rpm_i=3000.0,
+                        rpm_o=0.0, sense=1, inner=races.Driven(3000.0), displaced=False, contact_law=ContactLaw(),
+                        ball_drag=REFERENCE_DRAG)
+    assert auto is not None and auto.converged, getattr(auto, "message", None)
+    assert auto.cage_speed == pytest.approx(state.cage_speed, rel=1e-6)
     assert state.converged, state.message
     # along the load, with a small sideways shift from the contacts' traction
     assert state.displacement[0] > 0 and abs(state.displacement[1]) < 0.02 * state.displacement[0]
@@ -111,6 +120,35 @@ def test_pure_radial_start_balances_every_ball():
     # the kinematic orbital speed of a rolling deep-groove bearing: w_i (1 - D/d_m) / 2 within 1 %
     w_i = 3000.0 * np.pi / 30.0
     assert state.cage_speed == pytest.approx(0.5 * w_i * (1 - deep.ball_diameter / deep.pitch_diameter), rel=0.01)
+
+
+def test_a_budgeted_continuation_stops_at_a_fold():
+    """The CWRU 6205 under 300 N radial from its 30-N seed: with 30 N axial the balance branch
+    ends between 168.75 and 178.1 N radial (a fold; Newton stalls within 1e3 of its tolerance
+    there from every start). The 'auto' budget stops at two stalls in a row instead of halving
+    on towards it (MODEL.md §12a); without a budget the continuation keeps trying."""
+    from exudyn_bearing import CWRU_6205_BEARING
+    from exudyn_bearing.bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, file_inputs
+    from exudyn_bearing.solvers import quasidynamic
+
+    bearing, (oil, law, cage, drag) = file_inputs(CWRU_6205_BEARING, lubricant=FILE_LUBRICANT, contact_law=FILE_LAW,
+                                                  cage=FILE_CAGE, ball_drag=FILE_DRAG)
+    balances = []
+    make = quasidynamic._Balance.__init__
+
+    def counting(self, *a, **k):
+        balances.append(1)
+        make(self, *a, **k)
+
+    quasidynamic._Balance.__init__ = counting
+    try:
+        state = combined_load_state(bearing, oil, axial_force=0.0, radial_force=300.0, rpm=1797.0, ball_drag=drag,
+                                    contact_law=law, cage=cage, max_steps=40, max_step=37.5)
+    finally:
+        quasidynamic._Balance.__init__ = make
+    assert not state.converged and state.message.endswith("a fold"), state.message
+    assert "beyond 30 N axial + 168.75 N radial" in state.message
+    assert len(balances) <= 8  # 4 steps to 150 N, then 187.5 N (twice), 168.75 N, 178.1 N
 
 
 def test_cli_start_flag_takes_the_combined_start(tmp_path):

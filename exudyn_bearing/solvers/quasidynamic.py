@@ -221,6 +221,11 @@ RADIAL_SEED_FRACTION = 0.1
 
 #: the seed's axial load is taken back to zero in at least this many steps
 RETURN_STEPS = 4
+#: Jacobians a continuation step's Newton may take (a good step takes 1-3)
+STEP_JACOBIANS = 12
+#: a step whose Newton spends :data:`STEP_JACOBIANS` and ends within this factor of the
+#: tolerance has stalled: linear convergence, a near-singular balance
+STALL_FACTOR = 1e3
 
 
 def seed_axial_load(axial: float, radial: float) -> float:
@@ -415,6 +420,9 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe, reserve=0
     where Newton fails (stalled below 1/100 of ``largest``), doubled back after an easy step,
     at most ``steps_left`` steps (None: no limit), of which ``reserve`` are needed after this
     path: it stops as soon as the rest cannot be covered in the steps left, even at ``largest``.
+    With a budget it also stops where Newton stalls (:data:`STALL_FACTOR`) on two attempts in
+    a row, the second at half the step: a fold of the balance, which shorter steps approach
+    and do not pass (MODEL.md §12a).
     Returns (y, worst residual, None or why it stopped, the last balance, steps left)."""
     start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     span = float(np.linalg.norm(end - start))
@@ -423,6 +431,7 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe, reserve=0
     at = lambda t: start + t * (end - start)  # noqa: E731
     done, step, worst, balance = 0.0, min(1.0, largest / span), 0.0, None
     last = None  # (path parameter, state) of the step before, for the secant predictor
+    stalls = 0  # stalled attempts in a row
     while done < 1.0:
         if steps_left is not None:
             # the fewest steps the rest takes: a budget that cannot cover them is spent in vain
@@ -438,15 +447,20 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe, reserve=0
         # a step that needs more Jacobians than this is better halved (a good one takes 1-3);
         # each costs 11 balances, so a Jacobian is kept while it converges (chord steps)
         x, worst, iterations = damped_newton(balance.residual, guess / balance.scale, lo, hi, tol, balance.jacobian,
-                                             max_iterations=12, reuse_jacobian=True)
+                                             max_iterations=STEP_JACOBIANS, reuse_jacobian=True)
         if worst > tol and last is not None and iterations == 0:  # the extrapolation overshot: from y
             x, worst, iterations = damped_newton(balance.residual, y / balance.scale, lo, hi, tol, balance.jacobian,
-                                                 max_iterations=12, reuse_jacobian=True)
+                                                 max_iterations=STEP_JACOBIANS, reuse_jacobian=True)
         if worst <= tol:
-            last, y, done = (done, y), x * balance.scale, target
+            last, y, done, stalls = (done, y), x * balance.scale, target, 0
             if iterations <= 3:  # an easy step: the next may be longer, within the limit
                 step = min(2.0 * step, largest / span)
             continue
+        stalls = stalls + 1 if iterations >= STEP_JACOBIANS and worst <= STALL_FACTOR * tol else 0
+        if stalls >= 2 and steps_left is not None:
+            return y, worst, (f"no quasi-dynamic balance found beyond {describe(at(done))}: Newton stalls at "
+                              f"{describe(at(target))} and twice the step (largest scaled residual {worst:.2g}), "
+                              f"a fold"), balance, steps_left
         step *= 0.5
         if step < 0.01 * largest / span:
             return y, worst, (f"no quasi-dynamic balance found beyond {describe(at(done))} (largest "
