@@ -147,11 +147,12 @@ class NewtonPredictor:
         if self.chained is not None:
             self.chained(mbs, t, newtonIt, discontinuousIt)
         if newtonIt == 0:
-            self._count_cut(mbs, t)
+            solver = mbs.sys.get("dynamicSolver")
+            self._count_cut(solver, t)
         if not self.enabled or not self.nodes:
             return
         if newtonIt == 0:
-            self._pending = self._predict(mbs, t)
+            self._pending = self._predict(mbs, solver, t)
         elif newtonIt == 1 and self._pending is not None:
             q_new, v_new, a_new, new_step = self._pending
             self._pending = None
@@ -176,20 +177,19 @@ class NewtonPredictor:
         else:
             self._pending = None
 
-    def _count_cut(self, mbs, t):
+    def _count_cut(self, solver, t):
         """A step attempt that ends before the last one of the same solve follows a failed
         one: Exudyn retries a step from its start with a shorter step after Newton fails."""
-        solver, end = mbs.sys.get("dynamicSolver"), float(t)
+        end = float(t)
         last_solver, last_end = self._attempt
         if solver is last_solver and end < last_end - 1e-12 * max(1.0, abs(end)):
             self.cut_times.append(last_end)
         self._attempt = (solver, end)
 
-    def _predict(self, mbs, t):
+    def _predict(self, mbs, solver, t):
         """The full (q, v, a) vectors with the bearings' nodes at their constant-acceleration
-        state (called with Exudyn's zero-acceleration start in place), and whether the step
-        size changed; None outside a dynamic step."""
-        solver = mbs.sys.get("dynamicSolver")
+        state (called with Exudyn's zero-acceleration start in place; ``solver`` the system's
+        dynamic solver), and whether the step size changed; None outside a dynamic step."""
         if solver is not self._solver:  # a new solve: its constants and coordinate indices, once
             self._first_solve = self._solver is None
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan

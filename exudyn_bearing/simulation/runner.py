@@ -298,7 +298,7 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     it = getattr(sol, "it", None)
     info = RunInfo(asdict(settings), wall, int(getattr(it, "currentStepIndex", 0) or s.timeIntegration.numberOfSteps),
                    getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu,
-                   tuple(predictor.cut_times[counted:]) if predictor is not None and settings.implicit else None)
+                   _cut_times(predictor, counted, settings.implicit))
     if not ok:
         raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
                                      f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
@@ -307,6 +307,12 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
         raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles, mbs)}: "
                                      "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
     return info
+
+
+def _cut_times(predictor, counted, implicit):
+    """The step cuts the system's predictor hook recorded after its first ``counted`` (a
+    tuple of end times, s), None without the hook or for an explicit solver (no Newton)."""
+    return tuple(predictor.cut_times[counted:]) if predictor is not None and implicit else None
 
 
 def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
@@ -335,7 +341,7 @@ def _run_user_settings(mbs, handles, end_time, s) -> RunInfo:
     info = RunInfo({"solver": str(ti.solverType), "step": step, "user_settings": True}, wall,
                    int(getattr(it, "currentStepIndex", 0) or ti.numberOfSteps),
                    getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu,
-                   tuple(predictor.cut_times[counted:]) if predictor is not None and implicit else None)
+                   _cut_times(predictor, counted, implicit))
     q = np.asarray(mbs.systemData.GetODE2Coordinates())
     if not ok or not np.all(np.isfinite(q)):
         raise BearingSimulationError(f"exu.SolveDynamic did not finish (step {step:g} s){_where(handles, mbs)}")
