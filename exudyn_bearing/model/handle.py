@@ -139,9 +139,13 @@ class BearingHandle:
                             storeInternal: bool = True, writeToFile: bool = False) -> dict:
         """Exudyn body sensors of the outer race's body (a ``races.Housing`` or your housing
         through ``races.OnBody``) at the bearing centre, global frame: 'Acceleration' (m/s²),
-        'Velocity' (m/s), 'Displacement' (m, from the start). Sampled at the sensors' write
-        period (``simulationSettings.solution.sensors.writePeriod``: 5e-5 s for 20 kHz).
-        Returns {output: sensor number}; call before ``mbs.Assemble()``."""
+        'Velocity' (m/s), 'Displacement' (m, from the start), written every
+        ``simulationSettings.solution.sensors.writePeriod``. Write them at every step (the
+        period the step) and record them at your sample rate with
+        :func:`exudyn_bearing.studies.vibration.sampled_signal`, which filters as a
+        data-acquisition system does: written at the sample period they are point samples,
+        and the contact resonances above the Nyquist frequency alias into the band below it
+        (MODEL.md §13b). Returns {output: sensor number}; call before ``mbs.Assemble()``."""
         import exudyn as exu
         from exudyn.utilities import SensorBody
 
