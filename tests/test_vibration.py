@@ -78,6 +78,10 @@ def test_sampled_signal_filters_out_what_would_alias():
     assert line(point, 3100.0) > 1.5  # the alias, as point samples show it
     assert line(y, 3000.0) == pytest.approx(line(np.sin(2 * np.pi * 3000.0 * t), 3000.0), rel=1e-3)
     assert line(y, 3100.0) < 2.0 * 1e-4
+    with pytest.raises(ValueError, match="NaN"):
+        sampled_signal(steps, np.where(steps > 0.1, np.nan, x), fs)
+    with pytest.raises(ValueError, match="sample_rate"):
+        sampled_signal(steps, x, -1.0)
 
 
 # -- waviness selection: derived here, then simulated -----------------------------------------

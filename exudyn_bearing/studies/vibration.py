@@ -98,8 +98,10 @@ def sampled_signal(times, values, sample_rate: float):
 
     times, keep = np.unique(np.asarray(times, dtype=float), return_index=True)
     values = np.asarray(values, dtype=float)[keep]
-    if times.size < 4 or not np.all(np.isfinite(values)):
-        raise ValueError(f"sampled_signal: need at least 4 finite samples, got {times.size}")
+    if times.size < 4:
+        raise ValueError(f"sampled_signal: need at least 4 samples, got {times.size}")
+    if not np.all(np.isfinite(values)):
+        raise ValueError("sampled_signal: values hold NaN or inf (a diverged run?)")
     if not (math.isfinite(sample_rate) and sample_rate > 0):
         raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
     m = max(1, int(round(1.0 / (sample_rate * float(np.median(np.diff(times)))))))
