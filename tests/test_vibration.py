@@ -43,7 +43,6 @@ def test_envelope_of_a_modulated_resonance_finds_the_modulation():
     assert spectral_peaks(fe, ae, 1, min_hz=1.0)[0][0] == pytest.approx(rate, abs=0.2)
 
 
-
 @pytest.mark.parametrize("offset", [0.0, 0.25, 0.5, 0.63])
 def test_spectral_peaks_read_a_line_between_bins(offset):
     """A sine of amplitude 1.7 at ``offset`` bins past a 1-Hz bin: its peak reads 1.7 within
