@@ -443,7 +443,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--time", type=float, default=0.5, help="simulated time, s")
     p.add_argument("--settle", type=float, default=0.02, help="start left out of the spectra, s")
     p.add_argument("--sample-rate", type=float, default=20000.0, help="output sample rate, Hz (the step is at most "
-                                                                        "its period)")
+                                                                        "its period; the housing is recorded through an "
+                                                                        "anti-aliasing filter at 0.4 x this rate)")
     p.add_argument("--band", type=float, nargs=2, metavar=("LOW", "HIGH"),
                    help="envelope band, Hz (default: 0.6-1.4 x the housing resonance)")
     p.add_argument("--housing-frequency", type=float, default=3000.0, help="housing resonance, Hz")

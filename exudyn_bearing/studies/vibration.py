@@ -293,10 +293,11 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
               contact_law=FILE_LAW, cage=FILE_CAGE, ball_drag=FILE_DRAG) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
-    analyse the housing acceleration sampled at ``sample_rate`` Hz (the time step is at most
-    its period and puts two steps into each defect passage, a whole number per sample;
-    MODEL.md §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
-    the housing resonance), fault frequencies, defect passages. The first ``settle`` s are
+    analyse the housing acceleration recorded at ``sample_rate`` Hz as a data-acquisition
+    system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
+    the time step is at most its period and puts two steps into each defect passage, a whole
+    number per sample; §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
+    the housing resonance, at most the anti-aliasing corner), fault frequencies, defect passages. The first ``settle`` s are
     left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
     the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
     ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
