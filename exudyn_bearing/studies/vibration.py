@@ -297,8 +297,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
     the time step is at most its period and puts two steps into each defect passage, a whole
     number per sample; §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
-    the housing resonance, at most the anti-aliasing corner), fault frequencies, defect passages. The first ``settle`` s are
-    left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
+    the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
+    passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
     the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
     ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
     differences of the strongest envelope line (frequency, amplitude) and of the slip."""
@@ -341,11 +341,12 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     info = run_solver(mbs, [handle], time, settings)
     wall = _time.perf_counter() - wall
     frame = handle.connector.rotation
-    data = {k: np.asarray(mbs.GetSensorStoredData(s)) for k, s in sensors.items()}
-    acc, vel, disp = (sampled_signal(data[k][:, 0], data[k][:, 1:4], sample_rate)[1] @ frame
-                      for k in ("Acceleration", "Velocity", "Displacement"))
-    t = np.arange(len(acc)) / sample_rate
-    # the bearing's outputs at <= 2 kHz: means and smooth ball angles (1 s of 20 kHz states
+    names = ("Acceleration", "Velocity", "Displacement")
+    data = [np.asarray(mbs.GetSensorStoredData(sensors[k])) for k in names]
+    # the three sensors are written at the same step ends: one spline and one filter for all
+    t, recorded = sampled_signal(data[0][:, 0], np.hstack([d[:, 1:4] for d in data]), sample_rate)
+    acc, vel, disp = (recorded[:, 3 * i:3 * i + 3] @ frame for i in range(3))
+    # the bearing's outputs at <= 2 kHz: means and smooth ball angles (1 s of 20-kHz states
     # costs ~90 s through the connector, 10x the run's own post-processing otherwise)
     results = handle.Results(mbs, stride=max(1, int(round(1.0 / step)) // 2000))
     keep = t >= settle
