@@ -199,14 +199,16 @@ def test_perfect_bearing_under_radial_load_vibrates_at_the_ball_pass_frequency()
 
 def test_outer_race_defect_repeats_at_the_actual_cage_speed_below_pure_rolling():
     """A 1-mm, 5-um outer-race spall on the reference bearing at 1300 N, 1800 rpm (3.8 %
-    kinematic cage slip): the envelope spectrum's strongest line is Z f_c of the run, below
-    the pure-rolling BPFO by that slip; one passage per ball and cage revolution."""
+    kinematic cage slip): the envelope spectrum's line near BPFO, one of its two strongest, is
+    Z f_c of the run, below the pure-rolling BPFO by that slip; one passage per ball and cage
+    revolution. (The other: the spall's slow oscillation of the cage slip, 20–35 Hz, which
+    the strike step resolves; MODEL.md §13c.)"""
     from exudyn_bearing.studies.vibration import vibration
 
     r = vibration(REFERENCE_BEARING, rpm=1800, axial_force=1300.0, time=0.25, sample_rate=10000.0,
                   surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 5e-6),)))
-    line = r.envelope_peaks[0][0]
     actual, rolling = r.fault_frequencies["actual"]["BPFO"], r.fault_frequencies["kinematic"]["BPFO"]
+    line = min(r.envelope_peaks[:2], key=lambda p: abs(p[0] - rolling))[0]
     slip = r.kinematic_cage_slip_percent
     assert slip > 2.0
     assert rolling - actual == pytest.approx(rolling * slip / 100, rel=0.1)
@@ -235,6 +237,73 @@ def test_notch_envelope_amplitude_converges_under_step_halving():
     assert f0 == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=0.5)
     assert f1 == pytest.approx(f0, abs=0.02)
     assert a0 == pytest.approx(a1, rel=0.015)
+
+
+def _start_loads(bearing, surface, rpm, **load):
+    from exudyn_bearing.model.builder import CreateAngularContactBearing
+    from exudyn_bearing.presets import REFERENCE_LUBRICANT
+    from exudyn_bearing.races import Driven, Housing
+
+    mbs = exu.SystemContainer().AddSystem()
+    return CreateAngularContactBearing(mbs, bearing, REFERENCE_LUBRICANT, innerRace=Driven(rpm), outerRace=Housing(),
+                                       surface=surface, show=False, **load).initialLoads
+
+
+def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
+    """B = v √(2g/R_x) / (ω_b δ) (MODEL.md §13c) written out from pure-rolling kinematics and
+    the sphere-on-edge drop: the spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial
+    (the ball sinks its whole approach, B near 1: it bounces) sets the strike step; the CWRU
+    notch (the ball sinks 0.85 of its 3.2 µm) does not."""
+    from exudyn_bearing.model import steprule
+    from exudyn_bearing.presets import SPINDLE_40MM_BEARING
+
+    b, rpm = SPINDLE_40MM_BEARING, 12000.0
+    spall = SurfaceModel((Defect("outer", 0.0, 0.5e-3, 5e-6),))
+    loads = _start_loads(b, spall, rpm, axialForce=500.0)
+    D, dm, cos_a = b.ball_diameter, b.pitch_diameter, math.cos(b.contact_angle)
+    w_c = 0.5 * rpm * math.pi / 30 * (1 - D * cos_a / dm)  # pure rolling, outer race still
+    v = w_c * 0.5 * (dm + D * cos_a)  # the outer contact's speed over the race
+    r_x = D * (dm + D * cos_a) / (2 * dm)
+    delta = float(np.max(loads.outer_deflection))
+    sunk = min(5e-6, r_x - math.sqrt(r_x ** 2 - 0.25e-3 ** 2), delta)
+    k = 1.5 * loads.inner_load / loads.inner_deflection + 1.5 * loads.outer_load / loads.outer_deflection
+    w_b = math.sqrt(k.max() / b.ball_mass)
+    expected = v * math.sqrt(2 * sunk / r_x) / (w_b * delta)
+    assert sunk == delta and 0.8 < expected < 1.2
+    assert steprule.strike_number(b, spall, loads, rpm) == pytest.approx(expected, rel=1e-9)
+    assert steprule.strike_step(b, spall, loads, rpm) == pytest.approx(steprule.STRIKE_PHASE / w_b, rel=1e-9)
+    assert steprule.strike_number(b, SurfaceModel(), loads, rpm) == 0.0
+
+    notch = SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))
+    loads = _start_loads(CWRU_6205_BEARING, notch, 1797.0, radialForce=300.0)
+    assert steprule.strike_number(CWRU_6205_BEARING, notch, loads, 1797.0) < 0.5 * steprule.STRIKE_NUMBER
+    assert steprule.strike_step(CWRU_6205_BEARING, notch, loads, 1797.0) == math.inf
+
+
+def test_hard_strike_amplitude_converges_at_the_strike_step():
+    """The spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial (B = 0.99): the balls
+    bounce off the exit edge and rattle between the races at ω_b = 2π 33 kHz. At the default
+    step (the strike step 0.7/ω_b, 3.33 µs) the BPFO line reads within 12 % of a run at half
+    the step (9.4 % measured; 0.1-s runs converge to 0.263 m/s² at 0.78 µs); the passage
+    rule's 12.5 µs alone read it 69 % above (MODEL.md §13c)."""
+    from exudyn_bearing.model.steprule import STRIKE_PHASE
+    from exudyn_bearing.presets import SPINDLE_40MM_BEARING
+    from exudyn_bearing.simulation.runner import SolverSettings
+    from exudyn_bearing.studies.vibration import vibration
+
+    spall = SurfaceModel((Defect("outer", 0.0, 0.5e-3, 5e-6),))
+    amplitude = {}
+    for step in (None, 12.5e-6, 0.5 * STRIKE_PHASE / (2 * math.pi * 33.0e3)):
+        r = vibration(SPINDLE_40MM_BEARING, rpm=12000, axial_force=500.0, time=0.04, settle=0.01, surface=spall,
+                      settings=SolverSettings(step=step, progress=False))
+        f, a = r.envelope_peaks[0]
+        assert f == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=1.0)
+        amplitude[step] = (r.solver["step_s"], a)
+    (h, a), (_, coarse), (_, fine) = amplitude.values()
+    assert r.solver["strike_number"] > 0.8
+    assert STRIKE_PHASE / (2 * math.pi * 34e3) < h < STRIKE_PHASE / (2 * math.pi * 30e3)
+    assert a == pytest.approx(fine, rel=0.12)
+    assert coarse > 1.4 * fine
 
 
 def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():

@@ -43,11 +43,12 @@ import math
 
 import numpy as np
 
-from contact.geometry import contact_path_radius
+from contact.geometry import contact_path_radius, rolling_radius
 
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
            "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
-           "recommended_step", "recommended_absolute_tolerance"]
+           "recommended_step", "recommended_absolute_tolerance", "STEPS_PER_PASSAGE", "passage_step",
+           "STRIKE_NUMBER", "STRIKE_PHASE", "strike_number", "strike_step"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
@@ -135,3 +136,48 @@ def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
         if speed > 0.0:
             step = min(step, d.length / (steps_per_passage * speed))
     return step
+
+
+#: bounce number above which the ball's rattle after a strike sets the step (MODEL.md §13c):
+#: measured, 0.10 needs no finer step (the CWRU 20-um inner spall), 0.13 and above do
+STRIKE_NUMBER = 0.12
+#: largest ω_b h at a strike above :data:`STRIKE_NUMBER`, rad (MODEL.md §13c)
+STRIKE_PHASE = 0.7
+
+
+def strike_number(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
+    """Bounce number B = v_n / (ω_b δ) of the hardest defect strike of ``surface`` (MODEL.md
+    §13c), 0 without defects or loaded contacts.
+
+    At a defect's exit edge the ball's centre, sunk by g = min(the defect's reach, δ), is lifted
+    along the edge's circle of radius R_x at the contact's speed v = |ω_c − ω_race| ρ over the
+    race: it meets the far side at the normal speed v_n = v √(2 g / R_x). ω_b is the ball's
+    contact frequency between its races (:func:`ball_vibration_frequency`) and δ the race's
+    largest Hertz approach, both of the quasi-static ``loads``. B compares v_n with the speed
+    of the contact's own oscillation at amplitude δ: near 1 the ball bounces off the edge and
+    rattles between its races. A pit on a ball strikes both races."""
+    w_b = ball_vibration_frequency(bearing, loads)
+    if surface is None or not surface.defects or w_b <= 0.0:
+        return 0.0
+    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    w_c = bearing.cage_speed(w_i, w_o)
+    number = 0.0
+    for d in surface.defects:
+        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
+            delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
+            if delta <= 0.0:
+                continue
+            args = (bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
+            r_x = float(rolling_radius(*args))
+            speed = abs(w_c - (w_i if race == "inner" else w_o)) * float(contact_path_radius(*args))
+            sunk = min(d.reach(r_x), delta)
+            number = max(number, speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta))
+    return number
+
+
+def strike_step(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
+    """:data:`STRIKE_PHASE` / ω_b where the :func:`strike_number` exceeds :data:`STRIKE_NUMBER`
+    (the step then resolves the ball's rattle after a strike, MODEL.md §13c), s; inf otherwise."""
+    if strike_number(bearing, surface, loads, inner_rpm, outer_rpm) <= STRIKE_NUMBER:
+        return math.inf
+    return STRIKE_PHASE / ball_vibration_frequency(bearing, loads)

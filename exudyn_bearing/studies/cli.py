@@ -179,12 +179,13 @@ def _vibration(args) -> int:
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
-          f"(step {sv['step_s']:g} s, {sv['steps']} steps, {sv['extra_steps']} more than planned; {sv['step_cuts']} "
+          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, {sv['steps']} steps, {sv['extra_steps']} more than planned; {sv['step_cuts']} "
           f"step cuts, after {sv['passages_cut']} of the {sv['passages']} passages)")
     est = result.error_estimate
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time): strongest "
-              f"envelope line {est['envelope_line_Hz']:.3g} Hz, its amplitude {est['envelope_amplitude_percent']:.2g} %, "
+              f"envelope line {est['envelope_line_Hz']:.3g} Hz, its amplitude {est['envelope_amplitude_percent']:.2g} % "
+              f"(error bound {est['envelope_amplitude_bound_percent']:.2g} %), "
               f"kinematic cage slip {est['kinematic_cage_slip_pp']:.2g} pp")
     if args.plot:
         print(f"  plot written to {args.plot}")
@@ -452,7 +453,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--housing-damping", type=float, default=0.05, help="housing damping ratio")
     p.add_argument("--out", default="out/vibration", help="output directory (signal.csv, vibration.json)")
     p.add_argument("--error-estimate", action="store_true",
-                   help="repeat at half the step and report the changes of the strongest envelope line")
+                   help="repeat at half the step and report the changes of the strongest envelope line "
+                        "(twice the amplitude's change bounds its error, MODEL.md §13c)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies")
     p.set_defaults(func=_vibration)

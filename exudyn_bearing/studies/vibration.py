@@ -295,19 +295,21 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
     analyse the housing acceleration recorded at ``sample_rate`` Hz as a data-acquisition
     system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
-    the time step is at most its period and puts two steps into each defect passage, a whole
-    number per sample; §13c): spectrum, envelope spectrum in ``band`` (default: ±40 % about
+    the time step is at most its period, puts two steps into each defect passage and resolves
+    the ball's rattle where it strikes a defect's edge hard, a whole number per sample; §13c):
+    spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
     passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
     the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
     ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
-    differences of the strongest envelope line (frequency, amplitude) and of the slip."""
+    differences of the strongest envelope line (frequency, amplitude) and of the slip, and twice
+    the amplitude's: its error bound where the amplitude converges at order >= 1."""
     import exudyn as exu
 
     from ..bearingfile import file_inputs
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Housing
-    from ..model.steprule import passage_step
+    from ..model.steprule import passage_step, strike_number, strike_step
     from ..simulation.runner import SolverSettings, run_solver
 
     if not (math.isfinite(sample_rate) and sample_rate > 0):
@@ -332,7 +334,11 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     mbs.Assemble()
     period = 1.0 / sample_rate
     settings = settings or SolverSettings()
-    step = min(settings.step or min(handle.RecommendedStep(), passage_step(bearing, surface, rpm)), period)
+    loads = handle.initialLoads
+    strike = strike_number(bearing, surface, loads, rpm) if loads is not None else 0.0
+    step = settings.step or min(handle.RecommendedStep(), passage_step(bearing, surface, rpm),
+                                strike_step(bearing, surface, loads, rpm) if loads is not None else math.inf)
+    step = min(step, period)
     step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
     # the sensors (and the bearing's states) at every step: sampled_signal then records the
     # housing as a data-acquisition system would, through an anti-aliasing filter
@@ -374,7 +380,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           {"step_s": step, "steps": int(info.steps), "extra_steps": int(info.steps) - int(round(time / step)),
                            "step_cuts": len(info.cut_times), "cut_times_s": [float(c) for c in info.cut_times],
                            "passages_cut": passages_cut(events, info.cut_times), "passages": len(events),
-                           "newton_iterations": int(info.newton_iterations),
+                           "newton_iterations": int(info.newton_iterations), "strike_number": strike,
                            "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
         finer = vibration(bearing, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
@@ -385,6 +391,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
         out.error_estimate = {"method": "rerun at half the step", "reference_step_s": 0.5 * step,
                               "reference_wall_time_s": finer.wall_time_s,
                               "envelope_line_Hz": abs(f1 - f0), "envelope_amplitude_percent": 100 * abs(a1 - a0) / a1,
+                              # the run's error where the amplitude converges at order >= 1 from its
+                              # step down: at most change / (1 - 2^-1) (MODEL.md §13c)
+                              "envelope_amplitude_bound_percent": 200 * abs(a1 - a0) / a1,
                               "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent
                                                             - out.kinematic_cage_slip_percent)}
     return out
