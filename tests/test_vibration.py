@@ -239,14 +239,14 @@ def test_notch_envelope_amplitude_converges_under_step_halving():
     assert a0 == pytest.approx(a1, rel=0.015)
 
 
-def _start_loads(bearing, surface, rpm, **load):
+def _handle(bearing, surface, rpm, **load):
     from exudyn_bearing.model.builder import CreateAngularContactBearing
     from exudyn_bearing.presets import REFERENCE_LUBRICANT
     from exudyn_bearing.races import Driven, Housing
 
     mbs = exu.SystemContainer().AddSystem()
     return CreateAngularContactBearing(mbs, bearing, REFERENCE_LUBRICANT, innerRace=Driven(rpm), outerRace=Housing(),
-                                       surface=surface, show=False, **load).initialLoads
+                                       surface=surface, show=False, **load)
 
 
 def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
@@ -259,7 +259,8 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
 
     b, rpm = SPINDLE_40MM_BEARING, 12000.0
     spall = SurfaceModel((Defect("outer", 0.0, 0.5e-3, 5e-6),))
-    loads = _start_loads(b, spall, rpm, axialForce=500.0)
+    handle = _handle(b, spall, rpm, axialForce=500.0)
+    loads = handle.initialLoads
     D, dm, cos_a = b.ball_diameter, b.pitch_diameter, math.cos(b.contact_angle)
     w_c = 0.5 * rpm * math.pi / 30 * (1 - D * cos_a / dm)  # pure rolling, outer race still
     v = w_c * 0.5 * (dm + D * cos_a)  # the outer contact's speed over the race
@@ -273,11 +274,18 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
     assert steprule.strike_number(b, spall, loads, rpm) == pytest.approx(expected, rel=1e-9)
     assert steprule.strike_step(b, spall, loads, rpm) == pytest.approx(steprule.STRIKE_PHASE / w_b, rel=1e-9)
     assert steprule.strike_number(b, SurfaceModel(), loads, rpm) == 0.0
+    assert handle.RecommendedSurfaceStep(rpm) == pytest.approx(steprule.STRIKE_PHASE / w_b, rel=1e-9)
 
+    # the notch: two steps per passage over its 0.18 mm at the outer contact's speed
+    b, rpm = CWRU_6205_BEARING, 1797.0
     notch = SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))
-    loads = _start_loads(CWRU_6205_BEARING, notch, 1797.0, radialForce=300.0)
-    assert steprule.strike_number(CWRU_6205_BEARING, notch, loads, 1797.0) < 0.5 * steprule.STRIKE_NUMBER
-    assert steprule.strike_step(CWRU_6205_BEARING, notch, loads, 1797.0) == math.inf
+    handle = _handle(b, notch, rpm, radialForce=300.0)
+    assert steprule.strike_number(b, notch, handle.initialLoads, rpm) < 0.5 * steprule.STRIKE_NUMBER
+    assert steprule.strike_step(b, notch, handle.initialLoads, rpm) == math.inf
+    D, dm = b.ball_diameter, b.pitch_diameter
+    v = 0.5 * rpm * math.pi / 30 * (1 - D / dm) * 0.5 * (dm + D)
+    assert handle.RecommendedSurfaceStep(rpm) == pytest.approx(0.18e-3 / (2 * v), rel=1e-9)
+    assert _handle(b, SurfaceModel(), rpm, radialForce=300.0).RecommendedSurfaceStep(rpm) == math.inf
 
 
 def test_hard_strike_amplitude_converges_at_the_strike_step():

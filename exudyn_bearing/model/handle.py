@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import math
+
 import numpy as np
 
 from ..bearing import Bearing
@@ -78,6 +80,23 @@ class BearingHandle:
         from .steprule import NOMINAL_STEP, recommended_step
 
         return NOMINAL_STEP if self.initialLoads is None else recommended_step(self.bearing, self.initialLoads)
+
+    def RecommendedSurfaceStep(self, innerRpm: float, outerRpm: float = 0.0) -> float:
+        """The time step this bearing's defects ask for at races turning at ``innerRpm`` and
+        ``outerRpm``, s (inf without defects): two steps per defect passage and, where a ball
+        strikes a defect's edge hard, 0.7/ω_b to resolve its rattle between the races (MODEL.md
+        §13c; :func:`~exudyn_bearing.model.steprule.passage_step`, :func:`~exudyn_bearing.model.
+        steprule.strike_step`). A scene that reads vibration amplitudes steps at no more than
+        min(:meth:`RecommendedStep`, this, its sample period)."""
+        from .steprule import passage_step, strike_step
+
+        surface = self.connector.surface
+        if surface is None or not surface.defects:
+            return math.inf
+        step = passage_step(self.bearing, surface, innerRpm, outerRpm)
+        if self.initialLoads is not None:
+            step = min(step, strike_step(self.bearing, surface, self.initialLoads, innerRpm, outerRpm))
+        return step
 
     def RecommendedAbsoluteTolerance(self) -> float:
         """Newton's absolute tolerance for this bearing, N: 3e-5 of its largest contact load

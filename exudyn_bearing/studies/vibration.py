@@ -309,7 +309,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     from ..bearingfile import file_inputs
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Housing
-    from ..model.steprule import passage_step, strike_number, strike_step
+    from ..model.steprule import strike_number
     from ..simulation.runner import SolverSettings, run_solver
 
     if not (math.isfinite(sample_rate) and sample_rate > 0):
@@ -336,9 +336,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     settings = settings or SolverSettings()
     loads = handle.initialLoads
     strike = strike_number(bearing, surface, loads, rpm) if loads is not None else 0.0
-    step = settings.step or min(handle.RecommendedStep(), passage_step(bearing, surface, rpm),
-                                strike_step(bearing, surface, loads, rpm) if loads is not None else math.inf)
-    step = min(step, period)
+    step = min(settings.step or min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)), period)
     step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
     # the sensors (and the bearing's states) at every step: sampled_signal then records the
     # housing as a data-acquisition system would, through an anti-aliasing filter
