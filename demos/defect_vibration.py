@@ -6,11 +6,13 @@
    kinematic and actual fault frequencies; figure and table under docs/.
 2. A plain Exudyn scene solved by ``mbs.SolveDynamic``: the gearbox high-speed shaft of
    demos/hss_shaft.py whose bearing 0 has an outer-race spall and sits on a ``races.Housing``;
-   the housing's envelope spectrum against that bearing's actual BPFO.
+   the housing's envelope spectrum against that bearing's actual BPFO, at the step the spall
+   asks for (``handle.RecommendedSurfaceStep``).
 
     python demos/defect_vibration.py [--time 0.5] [--scene-time 0.1] [--out docs]
 """
 import argparse
+import math
 import sys
 import time
 from pathlib import Path
@@ -71,9 +73,13 @@ def scene(run_time):
     sensors = handles[0].AddVibrationSensors(mbs, outputs=("Acceleration",))
     mbs.Assemble()
     fs = 10000.0
+    # the step the bearing and its spall ask for (the balls strike the spall's exit edge hard:
+    # MODEL.md §13c), a whole number per sample
+    step = min(handles[0].RecommendedStep(), handles[0].RecommendedSurfaceStep(RPM), 1.0 / fs)
+    per_sample = math.ceil(1.0 / (fs * step) - 1e-9)
     settings = exu.SimulationSettings()
     settings.timeIntegration.endTime = run_time
-    settings.timeIntegration.numberOfSteps = int(round(run_time * fs))
+    settings.timeIntegration.numberOfSteps = int(round(run_time * fs)) * per_sample
     settings.timeIntegration.generalizedAlpha.spectralRadius = 0.5
     settings.timeIntegration.newton.relativeTolerance = 1e-4
     settings.timeIntegration.newton.absoluteTolerance = handles[0].RecommendedAbsoluteTolerance()
@@ -90,14 +96,11 @@ def scene(run_time):
     peaks = spectral_peaks(f, a, 4, min_hz=20.0, max_hz=1500.0)
     res = handles[0].Results(mbs)
     bpfo = actual_fault_frequencies(res)["BPFO"]
-    # the scene steps at its sample period: it reads the fault frequencies; the spall's
-    # amplitudes would need the step its strikes ask for (MODEL.md §13c)
-    amplitude_step = min(handles[0].RecommendedStep(), handles[0].RecommendedSurfaceStep(RPM), 1.0 / fs)
-    print(f"scene (mbs.SolveDynamic, {run_time:g} s in {wall:.0f} s): bearing 0's actual BPFO {bpfo:.2f} Hz, "
-          f"kinematic cage slip {np.mean(res.kinematic_cage_slip_percent):.3f} %; housing envelope peaks (Hz) "
-          + ", ".join(f"{p:.1f}" for p, _ in peaks) + f"; step {1e6 / fs:.0f} us (amplitudes: "
-          f"{amplitude_step * 1e6:.1f} us)", flush=True)
-    return bpfo, peaks, wall, amplitude_step
+    step = 1.0 / (fs * per_sample)
+    print(f"scene (mbs.SolveDynamic, {run_time:g} s at {step * 1e6:.3g} us in {wall:.0f} s): bearing 0's actual "
+          f"BPFO {bpfo:.2f} Hz, kinematic cage slip {np.mean(res.kinematic_cage_slip_percent):.3f} %; housing "
+          f"envelope peaks (Hz, m/s^2) " + ", ".join(f"{p:.1f} ({a:.3g})" for p, a in peaks), flush=True)
+    return bpfo, peaks, wall, step
 
 
 def main():
@@ -110,15 +113,15 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     table = cwru(args.time, out)
-    bpfo, peaks, wall, amplitude_step = scene(args.scene_time)
+    bpfo, peaks, wall, step = scene(args.scene_time)
     text = (f"# Race faults: the 6205 of the CWRU data (demos/defect_vibration.py)\n\n"
             f"300 N radial, 1797 rpm ({1797 / 60:.3f} Hz shaft), housing 2 kg at 3 kHz, 5 % damping, 20 kHz "
             f"output, {args.time:g} s per run (first 0.02 s left out). Envelope band 1.8–4.2 kHz.\n\n{table}\n"
             f"Gearbox shaft scene (`mbs.SolveDynamic`, {args.scene_time:g} s, {wall:.0f} s): bearing 0 with a "
             f"2-mm, 10-um outer-race spall on a housing; its actual BPFO {bpfo:.2f} Hz; the housing's envelope "
-            f"peaks {', '.join(f'{p:.1f}' for p, _ in peaks)} Hz. It steps at its 100-us sample period, which "
-            f"reads the fault frequencies; the spall's balls strike its exit edge hard, and its amplitudes would "
-            f"need {amplitude_step * 1e6:.1f} us (`handle.RecommendedSurfaceStep`, MODEL.md §13c).\n")
+            f"peaks (10 kHz) {', '.join(f'{p:.1f} Hz ({a:.3g} m/s^2)' for p, a in peaks)}. The step, "
+            f"{step * 1e6:.3g} us, is the one the spall asks for (`handle.RecommendedSurfaceStep`: its balls "
+            f"strike the exit edge hard, MODEL.md §13c).\n")
     (out / "defect_vibration.md").write_text(text, encoding="utf-8")
     print(f"wrote {out / 'defect_vibration.md'}; total {time.perf_counter() - start:.0f} s")
 

@@ -179,8 +179,9 @@ def _vibration(args) -> int:
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
-          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, {sv['steps']} steps, {sv['extra_steps']} more than planned; {sv['step_cuts']} "
-          f"step cuts, after {sv['passages_cut']} of the {sv['passages']} passages)")
+          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, {sv['steps']} steps, "
+          f"{sv['extra_steps']} more than planned; {sv['step_cuts']} step cuts, after {sv['passages_cut']} of the "
+          f"{sv['passages']} passages)")
     est = result.error_estimate
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time): strongest "

@@ -268,7 +268,8 @@ class VibrationResult:
     inputs: dict
     results: object = field(repr=False, default=None)  #: the bearing's BearingResults
     #: step s, steps taken, extra_steps (beyond time / step), step_cuts (failed steps tried again
-    #: shorter) and their cut_times_s, passages and passages_cut (followed by a cut), Newton iterations
+    #: shorter) and their cut_times_s, passages and passages_cut (followed by a cut), Newton
+    #: iterations, strike_number (the bounce number B of MODEL.md §13c)
     solver: dict = field(default_factory=dict)
     error_estimate: dict | None = None  #: see :func:`vibration`
 
@@ -281,7 +282,7 @@ class VibrationResult:
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
-                          "solver": "step_s, cut_times_s in s; counts", "error_estimate": "Hz, %, pp, s",
+                          "solver": "step_s, cut_times_s in s; counts; strike_number -", "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
