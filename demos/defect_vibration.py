@@ -46,7 +46,7 @@ def cwru(run_time, out):
         rows.append(f"| {name} | {key} | {f['nominal'][LINES[name][0]]:.3f} | {f['kinematic'][LINES[name][0]]:.3f} "
                     f"| {f['actual'][LINES[name][0]]:.3f} "
                     f"| {r.envelope_peaks[0][0]:.2f} | {peaks} | {r.kinematic_cage_slip_percent:.3f} "
-                    f"| {r.wall_time_s:.1f} | {r.solver['step_s'] * 1e6:.0f} µs, {r.solver['extra_steps']} |")
+                    f"| {r.wall_time_s:.1f} | {r.solver['step_s'] * 1e6:.3g} µs, {r.solver['extra_steps']} |")
         k = LINES[name][0]
         print(f"{name}: {key} nominal {f['nominal'][k]:.3f} Hz, kinematic {f['kinematic'][k]:.3f}, actual "
               f"{f['actual'][k]:.3f}; envelope peaks (Hz) {peaks}; shaft {1797 / 60:.3f} Hz, "

@@ -287,6 +287,16 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
     assert handle.RecommendedSurfaceStep(rpm) == pytest.approx(0.18e-3 / (2 * v), rel=1e-9)
     assert _handle(b, SurfaceModel(), rpm, radialForce=300.0).RecommendedSurfaceStep(rpm) == math.inf
 
+    # a 1-mm, 20-um inner spall: the ball sinks its whole approach, its contact opens and
+    # closes over it: the strike step, though B (0.10) is below the strike number
+    spall = SurfaceModel((Defect("inner", 0.0, 1e-3, 20e-6),))
+    loads = _handle(b, spall, rpm, radialForce=300.0).initialLoads
+    k = 1.5 * loads.inner_load / loads.inner_deflection + 1.5 * loads.outer_load / loads.outer_deflection
+    assert 20e-6 > float(np.max(loads.inner_deflection))
+    assert steprule.strike_number(b, spall, loads, rpm) < steprule.STRIKE_NUMBER
+    assert steprule.strike_step(b, spall, loads, rpm) == pytest.approx(
+        steprule.STRIKE_PHASE / math.sqrt(k.max() / b.ball_mass), rel=1e-9)
+
 
 def test_hard_strike_amplitude_converges_at_the_strike_step():
     """The spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial (B = 0.99): the balls
@@ -320,7 +330,10 @@ def test_hard_strike_amplitude_converges_at_the_strike_step():
 def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
     """A 1-mm, 20-um inner-race spall on the 6205 at 300 N radial, 1797 rpm: the spall turns
     with the shaft through the load zone once per revolution, so the envelope spectrum has
-    the run's BPFI and the sidebands BPFI +- f_shaft among its strongest lines."""
+    the run's BPFI and the sidebands BPFI +- f_shaft among its strongest lines. The ball's
+    contacts open and close over it: at the strike step few passages are followed by a step
+    cut (7 of 48; at the passage rule's 25 us every loaded one, 12 of 32 over 0.2 s; MODEL.md
+    §13c)."""
     from exudyn_bearing.studies.vibration import vibration
 
     r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.3, sample_rate=10000.0,
@@ -330,6 +343,7 @@ def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
     for want in (bpfi, bpfi - shaft, bpfi + shaft):
         assert min(abs(f - want) for f in lines) < 1.0, (want, lines)
     assert abs(bpfi - r.fault_frequencies["kinematic"]["BPFI"]) < 0.01 * bpfi
+    assert r.solver["passages_cut"] <= 0.25 * r.solver["passages"]  # 7 of 48 (at 25 us: 12 of 32 in 0.2 s)
 
 
 def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():

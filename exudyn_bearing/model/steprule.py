@@ -141,8 +141,30 @@ def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
 #: bounce number above which the ball's rattle after a strike sets the step (MODEL.md §13c):
 #: measured, 0.10 needs no finer step (the CWRU 20-um inner spall), 0.13 and above do
 STRIKE_NUMBER = 0.12
-#: largest ω_b h at a strike above :data:`STRIKE_NUMBER`, rad (MODEL.md §13c)
+#: largest ω_b h where a ball strikes a defect's edge hard or its contact opens over it, rad
+#: (MODEL.md §13c)
 STRIKE_PHASE = 0.7
+
+
+def _strikes(bearing, surface, loads, inner_rpm, outer_rpm):
+    """(B, opens) of each defect and race it meets: :func:`strike_number`'s B and whether the
+    defect's reach is at least the race's approach δ (the contact opens over it)."""
+    w_b = ball_vibration_frequency(bearing, loads)
+    if surface is None or not surface.defects or w_b <= 0.0:
+        return
+    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    w_c = bearing.cage_speed(w_i, w_o)
+    for d in surface.defects:
+        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
+            delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
+            if delta <= 0.0:
+                continue
+            args = (bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
+            r_x = float(rolling_radius(*args))
+            speed = abs(w_c - (w_i if race == "inner" else w_o)) * float(contact_path_radius(*args))
+            reach = d.reach(r_x)
+            sunk = min(reach, delta)
+            yield speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta), reach >= delta
 
 
 def strike_number(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
@@ -156,28 +178,14 @@ def strike_number(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 
     largest Hertz approach, both of the quasi-static ``loads``. B compares v_n with the speed
     of the contact's own oscillation at amplitude δ: near 1 the ball bounces off the edge and
     rattles between its races. A pit on a ball strikes both races."""
-    w_b = ball_vibration_frequency(bearing, loads)
-    if surface is None or not surface.defects or w_b <= 0.0:
-        return 0.0
-    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
-    w_c = bearing.cage_speed(w_i, w_o)
-    number = 0.0
-    for d in surface.defects:
-        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
-            delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
-            if delta <= 0.0:
-                continue
-            args = (bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
-            r_x = float(rolling_radius(*args))
-            speed = abs(w_c - (w_i if race == "inner" else w_o)) * float(contact_path_radius(*args))
-            sunk = min(d.reach(r_x), delta)
-            number = max(number, speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta))
-    return number
+    return max((b for b, _ in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)), default=0.0)
 
 
 def strike_step(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
-    """:data:`STRIKE_PHASE` / ω_b where the :func:`strike_number` exceeds :data:`STRIKE_NUMBER`
-    (the step then resolves the ball's rattle after a strike, MODEL.md §13c), s; inf otherwise."""
-    if strike_number(bearing, surface, loads, inner_rpm, outer_rpm) <= STRIKE_NUMBER:
+    """:data:`STRIKE_PHASE` / ω_b where a ball's contact opens over a defect (its reach at
+    least the approach δ) or the :func:`strike_number` exceeds :data:`STRIKE_NUMBER`: the step
+    then resolves the contact's unloading, the strike and the ball's rattle after it (MODEL.md
+    §13c), s; inf otherwise."""
+    if not any(b > STRIKE_NUMBER or opens for b, opens in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)):
         return math.inf
     return STRIKE_PHASE / ball_vibration_frequency(bearing, loads)
