@@ -125,17 +125,22 @@ def passage_step(bearing, surface, inner_rpm: float, outer_rpm: float = 0.0,
     |ω_c − ω_race| ρ over it (ρ = d_m/2 ∓ r cos α, the pure-rolling cage speed ω_c), so
     h = L / (steps_per_passage |ω_c − ω_race| ρ); a pit on a ball passes at the ball's surface
     speed, which rolling makes the races' (the faster of the two); inf without defects."""
-    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
-    w_c = bearing.cage_speed(w_i, w_o)
     step = math.inf
     for d in surface.defects:
-        speed = 0.0
-        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
-            rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
-            speed = max(speed, abs(w_c - (w_i if race == "inner" else w_o)) * rho)
+        speed = max(v for _, v in _contact_speeds(bearing, d, inner_rpm, outer_rpm))
         if speed > 0.0:
             step = min(step, d.length / (steps_per_passage * speed))
     return step
+
+
+def _contact_speeds(bearing, defect, inner_rpm, outer_rpm):
+    """(race, v) for each race ``defect`` meets (a pit on a ball: both): v = |ω_c − ω_race| ρ,
+    the contact's speed over that race at pure rolling (:func:`passage_step`), m/s."""
+    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
+    w_c = bearing.cage_speed(w_i, w_o)
+    for race in ("inner", "outer") if defect.race == "ball" else (defect.race,):
+        rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
+        yield race, abs(w_c - (w_i if race == "inner" else w_o)) * float(rho)
 
 
 #: bounce number above which the ball's rattle after a strike sets the step (MODEL.md §13c):
@@ -152,16 +157,12 @@ def _strikes(bearing, surface, loads, inner_rpm, outer_rpm):
     w_b = ball_vibration_frequency(bearing, loads)
     if surface is None or not surface.defects or w_b <= 0.0:
         return
-    w_i, w_o = inner_rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
-    w_c = bearing.cage_speed(w_i, w_o)
     for d in surface.defects:
-        for race in ("inner", "outer") if d.race == "ball" else (d.race,):
+        for race, speed in _contact_speeds(bearing, d, inner_rpm, outer_rpm):
             delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
             if delta <= 0.0:
                 continue
-            args = (bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race)
-            r_x = float(rolling_radius(*args))
-            speed = abs(w_c - (w_i if race == "inner" else w_o)) * float(contact_path_radius(*args))
+            r_x = float(rolling_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race))
             reach = d.reach(r_x)
             sunk = min(reach, delta)
             yield speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta), reach >= delta

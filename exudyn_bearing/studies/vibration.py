@@ -282,7 +282,8 @@ class VibrationResult:
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
-                          "solver": "step_s, cut_times_s in s; counts; strike_number -", "error_estimate": "Hz, %, pp, s",
+                          "solver": "step_s, cut_times_s in s; counts; strike_number -",
+                          "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
@@ -297,7 +298,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     analyse the housing acceleration recorded at ``sample_rate`` Hz as a data-acquisition
     system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
     the time step is at most its period, puts two steps into each defect passage and resolves
-    the ball's rattle where it strikes a defect's edge hard, a whole number per sample; §13c):
+    the contact's motion where a ball's contact opens over a defect or it strikes the edge
+    hard, a whole number per sample; §13c):
     spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
     passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
