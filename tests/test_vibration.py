@@ -297,6 +297,32 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
     assert steprule.strike_step(b, spall, loads, rpm) == pytest.approx(
         steprule.STRIKE_PHASE / math.sqrt(k.max() / b.ball_mass), rel=1e-9)
 
+    # a 1-mm outer spall takes 2 of the ball's 3.2 um (more than half: its load falls below a
+    # third) and sets the strike step at B = 0.06; 1 um of it (0.31 of the approach) does not
+    for depth, strikes in ((2e-6, True), (1e-6, False)):
+        spall = SurfaceModel((Defect("outer", 0.0, 1e-3, depth),))
+        loads = _handle(b, spall, rpm, radialForce=300.0).initialLoads
+        delta = float(np.max(loads.outer_deflection))
+        assert (depth >= 0.5 * delta) is strikes and depth < delta
+        assert steprule.strike_number(b, spall, loads, rpm) < steprule.STRIKE_NUMBER
+        assert (steprule.strike_step(b, spall, loads, rpm) < math.inf) is strikes
+
+
+def test_spall_that_takes_most_of_the_approach_runs_without_step_cuts():
+    """A 1-mm, 2-um outer spall on the 6205 at 300 N radial, 1797 rpm: the ball under the load
+    loses 0.62 of its approach over it, its contact unloads to a quarter and reloads at every
+    passage. At the passage rule's 25 us every passage was followed by step cuts (10 of 10
+    over 0.1 s; 36 cuts); at the strike step the opening criterion gives it (2.6 us), none
+    (MODEL.md §13c)."""
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.06, settle=0.01,
+                  surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 2e-6),)))
+    assert r.solver["step_s"] < 3e-6
+    assert r.solver["passages"] >= 5
+    assert r.solver["passages_cut"] <= 0.25 * r.solver["passages"]
+    assert r.envelope_peaks[0][0] == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=1.0 / 0.05)
+
 
 def test_hard_strike_amplitude_converges_at_the_strike_step():
     """The spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial (B = 0.99): the balls

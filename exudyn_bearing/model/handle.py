@@ -84,9 +84,9 @@ class BearingHandle:
     def RecommendedSurfaceStep(self, innerRpm: float, outerRpm: float = 0.0) -> float:
         """The time step this bearing's defects ask for at races turning at ``innerRpm`` and
         ``outerRpm``, s (inf without defects): two steps per defect passage and, where a ball's
-        contact opens over a defect or it strikes the edge hard, 0.7/ω_b to resolve the contact's
-        unloading and the ball's rattle between the races (MODEL.md
-        §13c; :func:`~exudyn_bearing.model.steprule.passage_step`, :func:`~exudyn_bearing.model.
+        contact opens (or loses half its approach) over a defect or it strikes the edge hard,
+        0.7/ω_b to resolve the contact's unloading and the ball's rattle between the races
+        (MODEL.md §13c; :func:`~exudyn_bearing.model.steprule.passage_step`, :func:`~exudyn_bearing.model.
         steprule.strike_step`). A scene that reads vibration amplitudes steps at no more than
         min(:meth:`RecommendedStep`, this, its sample period)."""
         from .steprule import passage_step, strike_step

@@ -298,8 +298,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     analyse the housing acceleration recorded at ``sample_rate`` Hz as a data-acquisition
     system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
     the time step is at most its period, puts two steps into each defect passage and resolves
-    the contact's motion where a ball's contact opens over a defect or it strikes the edge
-    hard, a whole number per sample; §13c):
+    the contact's motion where a ball's contact opens (or loses half its approach) over a
+    defect or it strikes the edge hard, a whole number per sample; §13c):
     spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
     passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
