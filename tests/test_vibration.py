@@ -304,6 +304,7 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
         loads = _handle(b, spall, rpm, radialForce=300.0).initialLoads
         delta = float(np.max(loads.outer_deflection))
         assert (depth >= 0.5 * delta) is strikes and depth < delta
+        assert steprule.reach_share(b, spall, loads, rpm) == pytest.approx(depth / delta, rel=1e-9)
         assert steprule.strike_number(b, spall, loads, rpm) < steprule.STRIKE_NUMBER
         assert (steprule.strike_step(b, spall, loads, rpm) < math.inf) is strikes
 
@@ -318,7 +319,7 @@ def test_spall_that_takes_most_of_the_approach_runs_without_step_cuts():
 
     r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.06, settle=0.01,
                   surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 2e-6),)))
-    assert r.solver["step_s"] < 3e-6
+    assert r.solver["step_s"] < 3e-6 and 0.5 < r.solver["reach_share"] < 1.0
     assert r.solver["passages"] >= 5
     assert r.solver["passages_cut"] <= 0.25 * r.solver["passages"]
     assert r.envelope_peaks[0][0] == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=1.0 / 0.05)

@@ -48,7 +48,7 @@ from contact.geometry import contact_path_radius, rolling_radius
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
            "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
            "recommended_step", "recommended_absolute_tolerance", "STEPS_PER_PASSAGE", "passage_step",
-           "STRIKE_NUMBER", "STRIKE_PHASE", "OPENING_SHARE", "strike_number", "strike_step"]
+           "STRIKE_NUMBER", "STRIKE_PHASE", "OPENING_SHARE", "strike_number", "reach_share", "strike_step"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
@@ -157,9 +157,8 @@ OPENING_SHARE = 0.5
 
 
 def _strikes(bearing, surface, loads, inner_rpm, outer_rpm):
-    """(B, opens) of each defect and race it meets: :func:`strike_number`'s B and whether the
-    defect's reach is at least :data:`OPENING_SHARE` of the race's approach δ (the contact
-    opens over it, or nearly: its load falls below a third)."""
+    """(B, share) of each defect and race it meets: :func:`strike_number`'s B and the defect's
+    reach as a share of the race's approach δ (:func:`reach_share`)."""
     w_b = ball_vibration_frequency(bearing, loads)
     if surface is None or not surface.defects or w_b <= 0.0:
         return
@@ -171,7 +170,7 @@ def _strikes(bearing, surface, loads, inner_rpm, outer_rpm):
             r_x = float(rolling_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race))
             reach = d.reach(r_x)
             sunk = min(reach, delta)
-            yield speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta), reach >= OPENING_SHARE * delta
+            yield speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta), reach / delta
 
 
 def strike_number(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
@@ -188,11 +187,20 @@ def strike_number(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 
     return max((b for b, _ in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)), default=0.0)
 
 
+def reach_share(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
+    """How deep a ball sinks into the deepest defect of ``surface``, as a share of the race's
+    largest Hertz approach δ at the quasi-static ``loads`` (reach / δ; MODEL.md §13c), 0
+    without defects: at 1 and above the ball's contact opens over it, from
+    :data:`OPENING_SHARE` on it unloads below a third and the strike step applies."""
+    return max((share for _, share in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)), default=0.0)
+
+
 def strike_step(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.0) -> float:
     """:data:`STRIKE_PHASE` / ω_b where a ball's contact opens or nearly opens over a defect
-    (its reach at least :data:`OPENING_SHARE` of the approach δ) or the :func:`strike_number` exceeds :data:`STRIKE_NUMBER`: the step
-    then resolves the contact's unloading, the strike and the ball's rattle after it (MODEL.md
-    §13c), s; inf otherwise."""
-    if not any(b > STRIKE_NUMBER or opens for b, opens in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)):
+    (:func:`reach_share` at least :data:`OPENING_SHARE`) or the :func:`strike_number` exceeds
+    :data:`STRIKE_NUMBER`: the step then resolves the contact's unloading, the strike and the
+    ball's rattle after it (MODEL.md §13c), s; inf otherwise."""
+    if not any(b > STRIKE_NUMBER or share >= OPENING_SHARE
+               for b, share in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)):
         return math.inf
     return STRIKE_PHASE / ball_vibration_frequency(bearing, loads)

@@ -179,7 +179,8 @@ def _vibration(args) -> int:
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
-          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, {sv['steps']} steps, "
+          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, defect reach "
+          f"{sv['reach_share']:.2g} of the approach, {sv['steps']} steps, "
           f"{sv['extra_steps']} more than planned; {sv['step_cuts']} step cuts, after {sv['passages_cut']} of the "
           f"{sv['passages']} passages)")
     est = result.error_estimate

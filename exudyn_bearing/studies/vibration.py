@@ -269,7 +269,8 @@ class VibrationResult:
     results: object = field(repr=False, default=None)  #: the bearing's BearingResults
     #: step s, steps taken, extra_steps (beyond time / step), step_cuts (failed steps tried again
     #: shorter) and their cut_times_s, passages and passages_cut (followed by a cut), Newton
-    #: iterations, strike_number (the bounce number B of MODEL.md §13c)
+    #: iterations, strike_number (the bounce number B of MODEL.md §13c) and reach_share (the
+    #: deepest defect's reach / the ball's approach; >= 0.5: the strike step)
     solver: dict = field(default_factory=dict)
     error_estimate: dict | None = None  #: see :func:`vibration`
 
@@ -282,7 +283,7 @@ class VibrationResult:
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
-                          "solver": "step_s, cut_times_s in s; counts; strike_number -",
+                          "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -",
                           "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
@@ -312,7 +313,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     from ..bearingfile import file_inputs
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Housing
-    from ..model.steprule import strike_number
+    from ..model.steprule import reach_share, strike_number
     from ..simulation.runner import SolverSettings, run_solver
 
     if not (math.isfinite(sample_rate) and sample_rate > 0):
@@ -339,6 +340,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     settings = settings or SolverSettings()
     loads = handle.initialLoads
     strike = strike_number(bearing, surface, loads, rpm) if loads is not None else 0.0
+    share = reach_share(bearing, surface, loads, rpm) if loads is not None else 0.0
     step = min(settings.step or min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)), period)
     step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
     # the sensors (and the bearing's states) at every step: sampled_signal then records the
@@ -382,6 +384,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "step_cuts": len(info.cut_times), "cut_times_s": [float(c) for c in info.cut_times],
                            "passages_cut": passages_cut(events, info.cut_times), "passages": len(events),
                            "newton_iterations": int(info.newton_iterations), "strike_number": strike,
+                           "reach_share": share,
                            "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
         finer = vibration(bearing, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
