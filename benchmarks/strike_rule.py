@@ -3,8 +3,8 @@
     python benchmarks/strike_rule.py [--quick] [case ...]
 
 For each case (a bearing, a defect, a speed and load; none of them among the cases the rule's
-constants were measured on) it prints the bounce number B, whether a ball's contact opens over
-the defect, and the strongest envelope line's amplitude at the rule's step h (what
+constants were measured on) it prints the bounce number B, how deep a ball sinks into the
+defect as a share of its approach (the opening criterion), and the strongest envelope line's amplitude at the rule's step h (what
 ``vibration()`` picks), at h/2 (its error estimate), at h/4 and, where the rule picked a shorter
 step than the passage rule alone would, at that passage step too. From h, h/2, h/4 it
 estimates the order p and the Richardson limit and says whether the error estimate's bound
@@ -63,7 +63,7 @@ def _line(result, near=None):
     return result.envelope_peaks[0]
 
 
-def run_case(name, quiet=False):
+def run_case(name):
     bearing, surface, rpm, loads, length, settle = CASES[name]
     common = dict(rpm=rpm, time=length, settle=settle, surface=surface, **loads)
     rule = vibration(bearing, **common, settings=SolverSettings(progress=False))
@@ -86,11 +86,12 @@ def run_case(name, quiet=False):
     # changes below RESOLUTION are the Newton tolerance's, not the step's
     if max(abs(d1), abs(d2)) < 1e-2 * RESOLUTION * a[2]:
         how += f" (changes below {RESOLUTION} %: the solver's resolution)"
-    print(f"{name}: B {rule.solver['strike_number']:.3f}, reach/approach {_reach_share(bearing, surface, rpm, loads):.2f}, step {h * 1e6:.3g} us ({rule.solver['step_cuts']} cuts, "
+    print(f"{name}: B {rule.solver['strike_number']:.3f}, reach/approach {rule.solver['reach_share']:.2f}, "
+          f"step {h * 1e6:.3g} us ({rule.solver['step_cuts']} cuts, "
           f"after {rule.solver['passages_cut']} of {rule.solver['passages']} passages); line {f_ref:.1f} Hz: "
           f"{a[0]:.5g} / {a[1]:.5g} / {a[2]:.5g} m/s^2 at h, h/2, h/4; {how}; half-step change {change:.2f} %, "
-          f"bound {bound:.2f} %, error {error:.2f} % -> {'covered' if error <= bound else 'NOT covered'}", flush=True)
-    out = dict(name=name, B=rule.solver["strike_number"], step=h, amplitudes=a, limit=limit, order=p,
+          f"bound {bound:.2f} %, error {error:.2f} % -> {_verdict(error, bound)}", flush=True)
+    out = dict(name=name, B=rule.solver["strike_number"], share=rule.solver["reach_share"], step=h, amplitudes=a, limit=limit, order=p,
                change=change, bound=bound, error=error)
     # the step vibration() takes without the strike rule (it rounds it to whole steps per sample)
     passage = min(steprule.passage_step(bearing, surface, rpm), 1.0 / rule.sample_rate,
@@ -103,23 +104,6 @@ def run_case(name, quiet=False):
               f"{coarse.solver['step_cuts']} cuts): {a_p:.5g} m/s^2, {out['passage'][1]:+.2f} % against the limit",
               flush=True)
     return out
-
-
-def _reach_share(bearing, surface, rpm, loads):
-    """The largest reach / approach δ over the defects and the races they meet (the strike
-    step's opening criterion, ``steprule.OPENING_SHARE``)."""
-    import numpy as np
-
-    from contact.geometry import rolling_radius
-
-    start = _handle(bearing, surface, rpm, loads).initialLoads
-    share = 0.0
-    for d in surface.defects:
-        for race, _ in steprule._contact_speeds(bearing, d, rpm, 0.0):
-            delta = float(np.max(start.inner_deflection if race == "inner" else start.outer_deflection))
-            r_x = float(rolling_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race))
-            share = max(share, d.reach(r_x) / delta)
-    return share
 
 
 def _verdict(error, bound):
@@ -148,10 +132,10 @@ def _handle(bearing, surface, rpm, loads):
 
 def main(names):
     rows = [run_case(n) for n in names]
-    print("\ncase | B | step us | change % | bound % | error % | covered | passage-rule step: error %")
+    print("\ncase | B | reach / approach | step us | change % | bound % | error % | covered | passage-rule step: error %")
     for r in rows:
         passage = f"{r['passage'][0] * 1e6:.3g} us: {r['passage'][1]:+.1f}" if "passage" in r else "-"
-        print(f"{r['name']} | {r['B']:.3f} | {r['step'] * 1e6:.3g} | {r['change']:.2f} | {r['bound']:.2f} | "
+        print(f"{r['name']} | {r['B']:.3f} | {r['share']:.2f} | {r['step'] * 1e6:.3g} | {r['change']:.2f} | {r['bound']:.2f} | "
               f"{r['error']:.2f} | {_verdict(r['error'], r['bound'])} | {passage}")
 
 
