@@ -151,8 +151,8 @@ STRIKE_NUMBER = 0.12
 STRIKE_PHASE = 0.7
 #: share of a race's approach δ a defect must reach for the ball's unloading and reloading
 #: over it to set the strike step (MODEL.md §13c): measured on the CWRU 6205 at the passage
-#: rule's 25 us, every passage was followed by step cuts at 0.62 and 0.93 of δ, one in ten
-#: or none at 0.26–0.44
+#: rule's 25 us, every or nearly every passage was followed by step cuts at 0.62 and 0.93
+#: of δ, one in ten or none at 0.26–0.44
 OPENING_SHARE = 0.5
 
 
@@ -191,7 +191,8 @@ def reach_share(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.
     """How deep a ball sinks into the deepest defect of ``surface``, as a share of the race's
     largest Hertz approach δ at the quasi-static ``loads`` (reach / δ; MODEL.md §13c), 0
     without defects: at 1 and above the ball's contact opens over it, from
-    :data:`OPENING_SHARE` on it unloads below a third and the strike step applies."""
+    :data:`OPENING_SHARE` on it unloads to about a third or less ((1 − 0.5)^1.5) and the
+    strike step applies."""
     return max((share for _, share in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)), default=0.0)
 
 
