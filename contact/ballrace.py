@@ -81,7 +81,9 @@ class ContactLaw:
     damping_ratio : float
         Normal contact damping as a fraction of critical for the ball mass on the
         linearized Hertz stiffness (damps the ~0.2 ms contact oscillations; the EHD film
-        damps them in reality). 0: none.
+        damps them in reality). 0: none. The default 0.05 is assumed, not measured: no
+        per-contact EHL value could be read; where balls strike defect edges hard the
+        vibration amplitude depends on it (MODEL.md §13c).
     min_film_thickness : float
         Floor on the Hamrock–Dowson film thickness, m (the formula gives 0 at zero
         entrainment speed, e.g. a start from rest).
