@@ -2,9 +2,8 @@
 accessors (Exudyn's ``Create...`` style: a small record of what was created)."""
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 

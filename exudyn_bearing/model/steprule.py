@@ -201,7 +201,7 @@ def strike_step(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.
     (:func:`reach_share` at least :data:`OPENING_SHARE`) or the :func:`strike_number` exceeds
     :data:`STRIKE_NUMBER`: the step then resolves the contact's unloading, the strike and the
     ball's rattle after it (MODEL.md §13c), s; inf otherwise."""
-    if not any(b > STRIKE_NUMBER or share >= OPENING_SHARE
-               for b, share in _strikes(bearing, surface, loads, inner_rpm, outer_rpm)):
+    if (strike_number(bearing, surface, loads, inner_rpm, outer_rpm) <= STRIKE_NUMBER
+            and reach_share(bearing, surface, loads, inner_rpm, outer_rpm) < OPENING_SHARE):
         return math.inf
     return STRIKE_PHASE / ball_vibration_frequency(bearing, loads)
