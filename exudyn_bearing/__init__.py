@@ -16,7 +16,8 @@ from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from . import races
 from .bearing import BallDrag, Bearing, Material, STEEL
-from .bearingfile import BearingFile, dumps_bearing, load_bearing, loads_bearing, save_bearing
+from .bearingfile import BearingFile, as_setup, dumps_bearing, load_bearing, loads_bearing, save_bearing
+from .setup import BearingSetup
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
@@ -42,8 +43,8 @@ __all__ = [
     "Bearing", "Material", "STEEL", "M50_STEEL", "Lubricant", "BallDrag", "CageModel", "ContactLaw",
     "REFERENCE_BEARING", "REFERENCE_LUBRICANT", "REFERENCE_DRAG", "REFERENCE_SPEED_RPM",
     "HIGH_SPEED_35MM_BEARING", "SPINDLE_40MM_BEARING", "ESTER_TURBINE_OIL", "HIGH_SPEED_DRAG", "CWRU_6205_BEARING",
-    # bearing files
-    "BearingFile", "load_bearing", "loads_bearing", "save_bearing", "dumps_bearing",
+    # bearing setups and files
+    "BearingSetup", "as_setup", "BearingFile", "load_bearing", "loads_bearing", "save_bearing", "dumps_bearing",
     # solvers without time integration
     "solve_load_distribution", "LoadDistribution", "steady_state", "SteadyState", "combined_load_state",
     "AzimuthStates", "solve_shaft", "ShaftBearing", "ShaftEquilibrium",

@@ -54,15 +54,20 @@ Example::
     ball_diameter_variation = []     # m per ball (> 0 oversize)
     ball = [[0, 6, 0.1e-6, 0.0]]     # [ball, order, amplitude_m, phase_deg]: a ball's waviness
 
-A function that takes a ``bearing`` takes a bearing file too — the :class:`BearingFile`
-or its path — and then every part the file gives (lubricant, drag, cage, contact law)
-unless that part is passed explicitly (:class:`FileOr`, :func:`file_inputs`).
+    [housing]                        # optional: the outer race on a housing (MODEL.md §13a)
+    frequency = 3000.0               # resonance, Hz (or stiffness = ... N/m)
+    mass = 2.0                       # kg, ring included
+    damping_ratio = 0.05             # of critical
+
+A file reads into a :class:`~exudyn_bearing.setup.BearingSetup`. A function that takes a
+``bearing`` takes it too, or its path, and then every part the file gives unless that part
+is passed explicitly (:func:`as_setup`); a part a function cannot use is refused by name.
 """
 from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass, fields
+from dataclasses import fields
 from pathlib import Path
 
 try:
@@ -76,72 +81,39 @@ from .bearing import BallDrag, Bearing, Material
 from .cage import CageModel
 from contact.surface import Defect, SurfaceModel, Waviness
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
+from .races import HousingModel
+from .setup import BearingSetup
 
-__all__ = ["BearingFile", "FileOr", "file_inputs", "load_bearing", "loads_bearing", "dumps_bearing",
-           "save_bearing"]
-
-
-@dataclass(frozen=True)
-class BearingFile:
-    """Everything a bearing file describes."""
-
-    bearing: Bearing
-    lubricant: Lubricant = REFERENCE_LUBRICANT
-    drag: BallDrag = REFERENCE_DRAG
-    cage: CageModel = CageModel()
-    contact_law: ContactLaw = ContactLaw()
-    surface: SurfaceModel = SurfaceModel()
+__all__ = ["BearingFile", "as_setup", "load_bearing", "loads_bearing", "dumps_bearing", "save_bearing"]
 
 
-@dataclass(frozen=True)
-class FileOr:
-    """Default of an input a bearing file gives: the file's value where the ``bearing``
-    argument is a bearing file (or its path), else ``default`` (:func:`file_inputs`)."""
-
-    default: object
-    label: str
-
-    def __repr__(self) -> str:
-        return f"<the bearing file's, else {self.label}>"
+#: the name bearing files were read into before the setup record (issue 48); the same class
+BearingFile = BearingSetup
 
 
-#: the BearingFile field of each input name (the builder's and the functions')
-_FILE_FIELDS = {"lubricant": "lubricant", "ball_drag": "drag", "ballDrag": "drag", "cage": "cage",
-                "contact_law": "contact_law", "contactLaw": "contact_law", "surface": "surface"}
-
-
-def file_inputs(bearing, **inputs):
-    """(the Bearing, (values in the order given)) of a function's ``bearing`` argument and of its ``inputs``
-    a bearing file may give (``lubricant``, ``ball_drag``/``ballDrag``, ``cage``,
-    ``contact_law``/``contactLaw``). ``bearing`` a :class:`Bearing`, a :class:`BearingFile` or
-    a bearing file's path; an input left at its :class:`FileOr` default takes the file's
-    part (or, without a file, the default), one passed explicitly wins."""
-    setup = None
+def as_setup(bearing, **given) -> BearingSetup:
+    """The :class:`BearingSetup` of a function's ``bearing`` argument — a setup, a plain
+    :class:`Bearing` (the package defaults for the other parts) or a bearing file's path —
+    with the inputs ``given`` explicitly (not ``FROM_SETUP``) in place of its parts.
+    The one conversion every entry point makes."""
     if isinstance(bearing, (str, os.PathLike)):
         try:
             setup = load_bearing(bearing)
         except OSError as err:
             raise ValueError(f"bearing: cannot read the bearing file {str(bearing)!r} ({err.strerror or err}); "
-                             "give a Bearing, a BearingFile or a bearing file's path") from None
-    elif isinstance(bearing, BearingFile):
+                             "give a Bearing, a BearingSetup or a bearing file's path") from None
+    elif isinstance(bearing, BearingSetup):
         setup = bearing
-    values = []
-    for name, value in inputs.items():  # (keywords keep their order)
-        if isinstance(value, FileOr):
-            value = value.default if setup is None else getattr(setup, _FILE_FIELDS[name])
-        values.append(value)
-    return (bearing if setup is None else setup.bearing), tuple(values)
+    elif isinstance(bearing, Bearing):
+        setup = BearingSetup(bearing)
+    else:
+        raise ValueError(f"bearing must be a Bearing, a BearingSetup or a bearing file's path, "
+                         f"got {type(bearing).__name__}")
+    return setup.replace(**given)
 
-
-#: the defaults of the functions' inputs that a bearing file gives
-FILE_LUBRICANT = FileOr(REFERENCE_LUBRICANT, "REFERENCE_LUBRICANT")
-FILE_DRAG = FileOr(REFERENCE_DRAG, "REFERENCE_DRAG")
-FILE_CAGE = FileOr(CageModel(), "CageModel()")
-FILE_LAW = FileOr(ContactLaw(), "ContactLaw()")
-FILE_SURFACE = FileOr(SurfaceModel(), "SurfaceModel(): perfect surfaces")
 
 _SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law",
-             "defect", "waviness"}
+             "defect", "waviness", "housing"}
 #: [cage] keys whose values are words, not numbers
 _CAGE_WORDS = {"kind", "guidance"}
 #: [contact_law] keys whose values are words, and those that are true or false
@@ -184,7 +156,7 @@ def _dataclass_from(cls, data: dict, name: str):
     return cls(**_table(data, name, allowed)) if name in data else None
 
 
-def loads_bearing(text: str) -> BearingFile:
+def loads_bearing(text: str) -> BearingSetup:
     """Parse a bearing file from a TOML string; unknown sections or keys raise ValueError."""
     try:
         data = tomllib.loads(text)
@@ -238,7 +210,13 @@ def loads_bearing(text: str) -> BearingFile:
             law = ContactLaw(**table)
         except ValueError as err:
             raise ValueError(f"[contact_law] {err}") from None
-    return BearingFile(bearing, lubricant, drag, cage, law, _surface(data))
+    housing = None
+    if "housing" in data:
+        try:
+            housing = _dataclass_from(HousingModel, data, "housing")
+        except ValueError as err:
+            raise ValueError(f"[housing] {err}") from None
+    return BearingSetup(bearing, lubricant, drag, cage, law, _surface(data), housing)
 
 
 def _surface(data: dict) -> SurfaceModel:
@@ -292,7 +270,7 @@ def _surface_text(surface: SurfaceModel) -> str:
     return text
 
 
-def load_bearing(path) -> BearingFile:
+def load_bearing(path) -> BearingSetup:
     """Read a bearing file (see the module docstring for the format)."""
     return loads_bearing(Path(path).read_text(encoding="utf-8"))
 
@@ -323,7 +301,7 @@ def _degrees_exact(angle: float) -> float:
     return deg
 
 
-def dumps_bearing(setup: BearingFile | Bearing) -> str:
+def dumps_bearing(setup: BearingSetup | Bearing) -> str:
     """TOML text for a bearing (and lubricant, drag, and a cage and contact law other than the
     defaults).
 
@@ -332,7 +310,7 @@ def dumps_bearing(setup: BearingFile | Bearing) -> str:
     within one ulp; a bearing read from a file always round-trips bit for bit.
     """
     if isinstance(setup, Bearing):
-        setup = BearingFile(setup)
+        setup = BearingSetup(setup)
     b = setup.bearing
     parts = ["[bearing]", f"balls = {b.balls}", f"ball_diameter = {b.ball_diameter!r}",
              f"pitch_diameter = {b.pitch_diameter!r}", f"inner_conformity = {b.inner_conformity!r}",
@@ -344,14 +322,19 @@ def dumps_bearing(setup: BearingFile | Bearing) -> str:
         text += _section("material", b.ball_material) + "\n\n"
     else:
         text += _section("ball_material", b.ball_material) + "\n\n" + _section("race_material", b.race_material) + "\n\n"
+    if setup.drag is None:
+        raise ValueError("drag: a setup without ball drag (drag=None) has no bearing-file form; pass "
+                         "ball_drag=None to the command instead")
     text += _section("lubricant", setup.lubricant) + "\n\n" + _section("drag", setup.drag) + "\n"
     if setup.cage != CageModel():
         text += "\n" + _section("cage", setup.cage) + "\n"
     if setup.contact_law != ContactLaw():
         text += "\n" + _section("contact_law", setup.contact_law) + "\n"
+    if setup.housing is not None:
+        text += "\n" + _section("housing", setup.housing) + "\n"
     return text + _surface_text(setup.surface)
 
 
-def save_bearing(setup: BearingFile | Bearing, path) -> None:
+def save_bearing(setup: BearingSetup | Bearing, path) -> None:
     """Write a bearing file."""
     Path(path).write_text(dumps_bearing(setup), encoding="utf-8")

@@ -37,7 +37,7 @@ import numpy as np
 
 from .bearing import Bearing
 
-__all__ = ["Race", "Fixed", "Driven", "Free", "Housing", "OnBody", "race_ring_section"]
+__all__ = ["Race", "Fixed", "Driven", "Free", "Housing", "HousingModel", "OnBody", "race_ring_section"]
 
 
 @dataclass(frozen=True)
@@ -111,6 +111,25 @@ def Housing(frequency: float = 3000.0, mass: float = 2.0, dampingRatio: float = 
         raise ValueError(f"Housing: stiffness must be positive, got {stiffness!r}")
     k = float(stiffness) if stiffness is not None else mass * (2.0 * math.pi * frequency) ** 2
     return Race("housing", mass=float(mass), support=(k, 2.0 * dampingRatio * math.sqrt(k * mass)))
+
+
+@dataclass(frozen=True)
+class HousingModel:
+    """The housing a bearing setup's outer race sits on (MODEL.md §13a; a bearing file's
+    ``[housing]``): ``mass`` kg, resonance ``frequency`` Hz (or ``stiffness`` N/m) at
+    ``damping_ratio`` of critical; :meth:`race` is its :func:`Housing` mount."""
+
+    frequency: float = 3000.0
+    mass: float = 2.0
+    damping_ratio: float = 0.05
+    stiffness: float | None = None
+
+    def __post_init__(self) -> None:
+        self.race()  # Housing's checks, each naming its parameter
+
+    def race(self) -> Race:
+        """The outer race on this housing (:func:`Housing`)."""
+        return Housing(self.frequency, self.mass, self.damping_ratio, self.stiffness)
 
 
 def OnBody(bodyNumber: int, localPosition=(0.0, 0.0, 0.0), localRotation=np.eye(3)) -> Race:

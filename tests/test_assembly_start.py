@@ -18,17 +18,8 @@ exu = pytest.importorskip("exudyn")
 from exudyn_bearing import (REFERENCE_BEARING, REFERENCE_LUBRICANT, BallDrag, CageModel,  # noqa: E402
                             CreateAngularContactBearing, SettleShaft, ShaftBearing, races, steady_state)
 from exudyn_bearing.solvers.quasidynamic import combined_load_state, pose_state  # noqa: E402
+from tests.helpers import BEARING_7205  # noqa: E402,F401
 
-#: a user's 7205-type bearing file (13 balls of 7.938 mm, d_m 38.5 mm, 25 degrees), as in issue 34
-BEARING_7205 = """\
-[bearing]
-balls = 13
-ball_diameter = 0.007938
-pitch_diameter = 0.0385
-inner_conformity = 0.52
-outer_conformity = 0.53
-contact_angle = 25.0
-"""  # tests/test_user_path.py adds its own oil and drag to it
 
 #: a plain Exudyn scene: the user's shaft (speed and tilt held) loaded by the user's force,
 #: the bearing's inner race on it, solved by SolveDynamic with the README's settings; prints JSON
@@ -110,6 +101,7 @@ def test_pose_state_at_the_load_balances_displacement_is_that_balance(cage, rel,
         assert np.linalg.norm(np.subtract(held.cage_offset, loaded.cage_offset)) < 0.02 * play
 
 
+@pytest.mark.slow
 def test_start_load_on_a_users_shaft_starts_at_the_steady_state(tmp_path):
     """The 7205 on a user's shaft, 300 N axial at 12 000 rpm, plain SolveDynamic: with
     startLoad the kinematic cage slip of every 4-ms window of the first 20 ms is within
@@ -126,6 +118,7 @@ def test_start_load_on_a_users_shaft_starts_at_the_steady_state(tmp_path):
     assert abs(_windows(t, slip, 0.002)[0] - settled) > 0.1, (_windows(t, slip, 0.002), settled)
 
 
+@pytest.mark.slow
 def test_scene_and_cli_start_alike_under_combined_load(tmp_path):
     """300 N + 200 N on the 7205 at 12 000 rpm: the scene with the bearing on the user's
     shaft and the CLI (the bearing's own race) start from the same quasi-dynamic state, so

@@ -11,7 +11,7 @@ exu = pytest.importorskip("exudyn")
 from exudyn.utilities import InertiaCylinder  # noqa: E402
 
 from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
-from tests.test_shaft import _demo  # noqa: E402  (loads demos/hss_shaft.py)
+from tests.helpers import _demo  # noqa: E402  (loads demos/hss_shaft.py)
 
 RPM = 1800.0
 OMEGA = RPM * np.pi / 30

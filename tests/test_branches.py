@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
+from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
 from contact.terms import term_record
 from contact.traction import crook_traction
@@ -20,7 +20,6 @@ from exudyn_bearing.results.outputs import cage_slip
 # the paper's bearing (table 1a), typed here rather than read from the preset
 D, D_M, ALPHA = 25e-3, 155e-3, math.radians(40.0)
 GAMMA = D * math.cos(ALPHA) / D_M
-RPM = math.pi / 30
 
 
 def harris_cage_speed(w_i, w_o, alpha=ALPHA):
@@ -86,6 +85,7 @@ exu = pytest.importorskip("exudyn")
 from exudyn_bearing import races  # noqa: E402
 from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
+from tests.helpers import INNER, RPM, R_I, R_O, TUBE_I, TUBE_O, W_RACE, Z_I, Z_O, _inner_contacts  # noqa: E402,F401
 
 
 @pytest.mark.parametrize("rpm_i,rpm_o", [(0.0, 600.0), (1800.0, -600.0)],
@@ -121,37 +121,6 @@ def test_dynamic_run_with_rotating_outer_race(rpm_i, rpm_o):
     second_half = res.time >= 0.5 * res.time[-1]
     assert np.max(np.abs(res.cage_speed[second_half] - w_th)) < tolerance
     assert np.max(np.abs(res.cage_slip_percent[second_half])) < 100 * tolerance / abs(w_th) * 1.01
-
-
-# ---------------------------------------------------------------------------------------
-# Barus-exponent cap on the traction pressure
-# ---------------------------------------------------------------------------------------
-(R_I, Z_I), (R_O, Z_O) = B.groove_centres()
-TUBE_I = (B.inner_conformity - 0.5) * B.ball_diameter
-TUBE_O = (B.outer_conformity - 0.5) * B.ball_diameter
-W_RACE = np.array([0.0, 0.0, 1800 * RPM])
-INNER = RaceContact(B.ball_diameter, B.pitch_diameter, B.inner_conformity, "inner", B.effective_modulus, B.ball_mass)
-
-
-def _inner_contacts(approaches, u_x=0.3, u_y=0.05, spin=20.0, w_c=82.6):
-    """Balls at azimuth 0 pressed into the inner groove by ``approaches`` (m) along the
-    free-angle normal (clear of the outer race), orbiting at w_c, with the given slip
-    (m/s) and spin (rad/s) at the contact centre: (c, v, w) of shape (n, 3)."""
-    n = np.array([-math.cos(B.contact_angle), 0.0, -math.sin(B.contact_angle)])  # groove centre -> ball -> contact
-    t1 = np.array([0.0, 1.0, 0.0])
-    t2 = np.cross(n, t1)
-    centres, velocities, omegas = [], [], []
-    for delta in approaches:
-        c = np.array([R_I, 0.0, Z_I]) + (TUBE_I + delta) * n
-        p = c + B.ball_radius * n
-        v = np.cross([0.0, 0.0, w_c], c)
-        # ball surface velocity at p = race velocity minus the slip: w x n fixes w across n,
-        # the spin fixes its part along n
-        m = (np.cross(W_RACE, p) - (u_x * t1 + u_y * t2) - v) / B.ball_radius
-        centres.append(c)
-        velocities.append(v)
-        omegas.append(np.cross(n, m) + (W_RACE @ n - spin) * n)
-    return np.array(centres), np.array(velocities), np.array(omegas)
 
 
 # 20 um: p_max ~1.9 GPa, below the cap; 100 um: ~4.2 GPa, above 60 / c_etaP = 3.43 GPa

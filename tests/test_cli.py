@@ -262,6 +262,7 @@ def _markdown_point_rows(text):
     return rows
 
 
+@pytest.mark.slow
 def test_skid_map_writes_one_row_per_point_and_resumes(reference_run, tmp_path):
     args = ["skid-map", "--axial", "1300,3000", "--rpm", "1800", "--time", "0.005", "--out", "map", "--workers", "2"]
     proc, _ = cli(*args, cwd=tmp_path)
@@ -465,7 +466,8 @@ BAD_INPUT = [
     pytest.param(["skid-map", "--axial", "1e9", "--rpm", "1800", "--time", "0.002", "--out", "m", "--workers", "1",
                   "--no-refine"], r"1 of 1 points failed", id="skid-map-point-failed"),
     pytest.param(["skid-map", "--axial", "1300", "--rpm", "1800", "--time", "0.002", "--out", "m", "--scheduler",
-                  "tcp://127.0.0.1:1"], r"--scheduler", id="skid-map-unreachable-scheduler"),
+                  "tcp://127.0.0.1:1"], r"--scheduler", id="skid-map-unreachable-scheduler",
+                 marks=pytest.mark.slow),  # (the client's 10-s connection timeout)
 ]
 
 
@@ -504,6 +506,7 @@ def test_render_takes_a_bearing_file(tmp_path):
     assert_real_png(frame, min_bytes=10_000)
 
 
+@pytest.mark.slow
 def test_cage_section_of_a_bearing_file_reaches_simulate_and_steady(tmp_path):
     """A [cage] with a 10-mm outer land and pocket friction (MODEL.md §11d) in the bearing
     file: `simulate` and `steady` run with it (the land's friction torque loads the pockets,
@@ -568,6 +571,7 @@ def test_negative_values_parse_and_get_a_message_about_the_direction(args, tmp_p
         assert "other way round" in proc.stderr, proc.stderr
 
 
+@pytest.mark.slow
 def test_help_states_units_and_sign_conventions(tmp_path):
     for command in ("loads", "simulate", "steady", "render", "skid-map"):
         proc, _ = cli(command, "--help", cwd=tmp_path)
@@ -593,6 +597,7 @@ def test_short_runs_are_too_short_to_judge_not_drifting(reference_run, tmp_path)
     assert [settled_label(v) for v in (True, False, None)] == ["yes", "no", "too short to judge"]
 
 
+@pytest.mark.slow
 def test_the_skid_measure_is_read_first(reference_run, tmp_path):
     """The kinematic cage slip (the skid measure, MODEL.md §7) comes before the paper's P19 in
     the JSON, the text output, the skid map's CSV columns and markdown, and the summary."""
@@ -615,6 +620,7 @@ def test_the_skid_measure_is_read_first(reference_run, tmp_path):
     assert summary.index("kinematic_cage_slip_percent") < summary.index("cage_slip_percent")
 
 
+@pytest.mark.slow
 def test_assumptions_are_stated_where_results_are_read(tmp_path):
     """The drag's oil fraction and whether rolling resistance and the thermal film are on, in
     the JSON (with units) and the text of simulate and steady (issue 34: a fully flooded drag

@@ -19,35 +19,12 @@ pytest.importorskip("numba")
 from contact import kernels as compiled  # noqa: E402
 from contact.kernels import float32  # noqa: E402
 from contact.ballrace import ContactLaw  # noqa: E402
-from contact.surface import Defect, SurfaceModel, Waviness  # noqa: E402
 from contact.traction import crook_traction  # noqa: E402
 from exudyn_bearing import REFERENCE_LUBRICANT as LUB  # noqa: E402
 from exudyn_bearing import races  # noqa: E402
-from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.cage import CageModel  # noqa: E402
 from exudyn_bearing.jacobian import block_jacobian, jacobian_columns  # noqa: E402
-
-
-def _contacts(n, seed=0):
-    """Contact states of the reference bearing's range (MODEL.md §9): semi-axes 0.8–1.8 mm
-    across and 0.15–0.35 mm along the rolling direction, 0.3–1.4 GPa, films 0.05–0.5 um,
-    rolling/transverse slip up to ~1 m/s and spin up to 500 rad/s, so the spin pole lies
-    inside, near and outside the ellipse; some contacts without spin."""
-    rng = np.random.default_rng(seed)
-    a = rng.uniform(0.8e-3, 1.8e-3, n)
-    b = rng.uniform(0.15e-3, 0.35e-3, n)
-    om = rng.normal(0.0, 200.0, n)
-    om[: n // 10] = 0.0
-    ux = rng.normal(0.0, 0.3, n) * rng.choice([0.01, 0.1, 1.0], n)
-    uy = rng.normal(0.0, 0.1, n) * rng.choice([0.01, 0.1, 1.0], n)
-    pm = rng.uniform(0.3e9, 1.4e9, n)
-    h = rng.uniform(5e-8, 5e-7, n)
-    return ux, uy, om, a, b, pm, h
-
-
-def _scale(fx, fy, mz, a):
-    """Per contact: the traction magnitude plus the spin moment over the long semi-axis."""
-    return np.hypot(fx, fy) + np.abs(mz) / a
+from tests.helpers import SCENES, _both_paths, _contacts, _scale, _scene  # noqa: E402,F401
 
 
 def test_crook_kernel_matches_the_accurate_rule():
@@ -106,67 +83,6 @@ def test_crook_kernel_redoes_float32_overflow_in_float64():
 def test_unloaded_contact_has_no_traction():
     got = compiled.crook_fast([0.5], [0.1], [30.0], [0.0], [0.0], [0.0], [1e-7], LUB)
     assert np.all(got == 0.0)
-
-
-def _scene(law=ContactLaw(), **kw):
-    sc = exu.SystemContainer()
-    mbs = sc.AddSystem()
-    kw.setdefault("innerRace", races.Driven(1800))
-    brg = CreateAngularContactBearing(mbs, contactLaw=law, show=False, **kw)
-    mbs.Assemble()
-    q = np.asarray(mbs.systemData.GetODE2Coordinates())
-    qt = np.asarray(mbs.systemData.GetODE2Coordinates_t())
-    idx = np.concatenate([np.arange(mbs.GetNodeODE2Index(n), mbs.GetNodeODE2Index(n) + 6) for n in brg.nodeNumbers])
-    rng = np.random.default_rng(5)
-    con = brg.connector
-    # generic state: every contact slides and spins, positions off the quasi-static ones
-    q_abs = q[idx] + con.reference + rng.normal(0, 1e-6, idx.size)
-    return sc, con, q_abs, qt[idx] * (1 + rng.normal(0, 1e-3, idx.size))
-
-
-SCENES = {
-    "axial, rigid cage, drag": dict(axialForce=1300.0),
-    "combined load": dict(axialForce=2200.0, radialForce=2000.0),
-    "spring chain, no drag": dict(axialForce=300.0, cage=CageModel(kind="spring-chain"), ballDrag=None),
-    "pocket play, free outer race": dict(axialForce=600.0, cage=CageModel(clearance=2e-6), outerRace=races.Free()),
-    "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
-    # MODEL.md §11d: the outer land's friction torque on the cage (and its reaction)
-    "land friction, outer-guided cage": dict(axialForce=1300.0, cage=CageModel(land_width=0.01)),
-    # MODEL.md §11d: ball–pocket friction at the contact points (the state's 1-um noise loads the pockets)
-    "pocket friction": dict(axialForce=1300.0, cage=CageModel(land_width=0.01, pocket_friction=0.3)),
-    # MODEL.md §11b, §11e: the rolling-resistance couple and the thermal film factor
-    "rolling resistance, thermal film, combined load": dict(
-        axialForce=2200.0, radialForce=2000.0, law=ContactLaw(rolling_resistance=True, thermal_film=True)),
-    "no spin moment, Fixed inner translation": dict(innerRace=races.Driven(1800, translation="fixed"),
-                                                    law=ContactLaw(spin_moment=False)),
-    # MODEL.md §13: defects on both races (one under ball 0), waviness, an oversize ball
-    "race surfaces, combined load": dict(axialForce=2200.0, radialForce=2000.0, surface=SurfaceModel(
-        (Defect("outer", 0.0, 1.0e-3, 5e-6), Defect("inner", 90.0, 2e-3, 20e-6, edge=0.2e-3)),
-        Waviness(inner=((5, 0.5e-6, 30.0),), outer=((17, 0.3e-6, 0.0), (15, 0.2e-6, 45.0)),
-                 ball_diameter_variation=(1e-6,) + (0.0,) * 15))),
-    # MODEL.md eq. 13.3, 13.6: pits under the outer contacts of balls 0 and 3, the contacts on
-    # their edge paths, and two balls' waviness: the contacts read the balls' rotations
-    "ball defects, combined load": dict(axialForce=2200.0, radialForce=2000.0, surface=SurfaceModel(
-        (Defect("ball", -0.5, 1.0e-3, 5e-6, ball=0), Defect("ball", -2.0, 1.2e-3, 8e-6, ball=3, edge=0.1e-3)),
-        Waviness(ball=((0, 6, 0.3e-6, 10.0), (4, 3, 0.2e-6, 0.0))))),
-    # driven-speed torque (feed-forward of the ramp + feedback) and an inner-land cage
-    "speed ramp, inner-guided cage, turning outer race": dict(
-        innerRace=races.Driven(lambda t: 900.0 + 30000.0 * t), outerRace=races.Fixed(lambda t: -100.0 * t),
-        cage=CageModel(guidance="inner"), axialForce=800.0, radialForce=300.0),
-}
-
-
-def _both_paths(con, q, qt, t=0.01):
-    """(single-state compiled path (the force user function), batch compiled path, numpy
-    path) of one state, each (n_nodes, 6)."""
-    single = con.residual_forces(t, q - con.reference, qt).reshape(-1, 6)
-    fast = con.evaluate(t, q, qt).reshape(-1, 6)
-    kernel, con._compiled = con._compiled, None
-    try:
-        ref = con.evaluate(t, q, qt).reshape(-1, 6)
-    finally:
-        con._compiled = kernel
-    return single, fast, ref
 
 
 @pytest.mark.parametrize("name", SCENES)

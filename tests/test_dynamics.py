@@ -16,7 +16,7 @@ from contact.ballrace import ContactLaw  # noqa: E402
 from exudyn_bearing import REFERENCE_BEARING, REFERENCE_LUBRICANT, races, solve_load_distribution  # noqa: E402
 from exudyn_bearing.model.builder import CreateAngularContactBearing  # noqa: E402
 from exudyn_bearing.simulation.runner import SolverSettings, run_solver  # noqa: E402
-from tests.test_quasistatic import jones_harris  # noqa: E402
+from tests.helpers import jones_harris  # noqa: E402
 
 BRG = REFERENCE_BEARING
 

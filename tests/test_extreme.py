@@ -122,6 +122,7 @@ def test_near_zero_load_does_not_blow_up():
     assert_no_blow_up(res, 2.0 * (share + centrifugal(res.ball_orbital_speed.max())), W)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("film_elasticity", [True, False])
 def test_unloaded_zone_combined_load(film_elasticity):
     """Slow speed: the balls opposite the radial load (almost) leave the inner race. With the

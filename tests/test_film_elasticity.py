@@ -176,7 +176,7 @@ def test_compiled_rule_matches_the_accurate_rule_on_reference_states():
     """Fast rule (compiled, order 16) against the accurate rule (order 32) on the reference
     bearing's contact states, random entrainment: worst error ~5e-3 of the force scale
     (the capped law alone: 6.8e-3, MODEL.md §6a), median ~5e-5."""
-    from tests.test_compiled import _contacts, _scale
+    from tests.helpers import _contacts, _scale
 
     ux, uy, om, a, b, pm, h = _contacts(200, seed=3)
     rng = np.random.default_rng(5)

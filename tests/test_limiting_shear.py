@@ -20,8 +20,8 @@ from contact.lubricant import REFERENCE_LUBRICANT as REF
 from contact.lubricant import Lubricant
 from contact.traction import crook_traction
 from contact.traction_law import limit_shear, thermal_factor
-from tests.test_compiled import _contacts  # reference-bearing contact states
-from tests.test_traction import _scipy_reference
+from tests.helpers import _contacts  # reference-bearing contact states
+from tests.helpers import _scipy_reference
 
 LAM = 0.047  # the reference oil's Λ (MODEL.md §6a)
 # heavily loaded contacts of the reference bearing (MODEL.md §9): (a transverse, b rolling, p_max, h)
@@ -274,6 +274,7 @@ def test_compiled_rational_tanh_is_accurate():
     assert compiled.CAP_P[1] - compiled.CAP_Q[1] == pytest.approx(-1.0 / 3.0, abs=2e-6)
 
 
+@pytest.mark.slow
 def test_the_default_law_runs_compiled_and_matches_the_numpy_path():
     """A scene with the default law (Crook with the oil's Λ) takes the compiled path, and its
     forces equal the numpy path's (same state, as tests/test_compiled.py)."""
@@ -394,6 +395,7 @@ def test_cli_traction_option(command, monkeypatch, tmp_path):
     """--traction on simulate, skid-map and render: default the bearing file's law, else
     crook-limited; every model accepted, the chosen law reaches the run (the run itself is
     replaced by a stub)."""
+    from exudyn_bearing import as_setup
     from exudyn_bearing.simulation import runner
     from exudyn_bearing.studies import cli, render, skidmap
 
@@ -402,8 +404,8 @@ def test_cli_traction_option(command, monkeypatch, tmp_path):
     class Stop(Exception):
         pass
 
-    def stub(*args, contact_law=None, **kw):
-        seen.append(contact_law)
+    def stub(*args, bearing=None, **kw):  # the law travels in the setup the command passes
+        seen.append(as_setup(bearing if bearing is not None else args[0]).contact_law)
         raise Stop
 
     monkeypatch.setattr(runner, "simulate", stub)

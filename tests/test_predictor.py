@@ -155,6 +155,7 @@ def test_newton_absolute_tolerance_follows_the_largest_contact_load():
     assert SolverSettings(absolute_tolerance=1e-3).resolved([handle]).absolute_tolerance == 1e-3
 
 
+@pytest.mark.slow
 def test_first_step_is_predicted_only_from_a_steady_start():
     """The deep-groove bearing under 2.5 kN radial load starts from the quasi-dynamic balance,
     whose initial accelerations carry transients (the cage at ~1600 m/s²): its first step is

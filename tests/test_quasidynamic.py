@@ -28,6 +28,7 @@ def test_vanishing_radial_load_is_the_axial_steady_state():
     assert abs(np.sum(state.pocket_force * state.orbit_radius)) < 1e-6 * np.max(np.abs(state.pocket_force)) + 1e-9
 
 
+@pytest.mark.slow
 def test_dynamic_run_from_the_combined_start_holds_its_cage_speed():
     """400 N + 100 N radial at 1800 rpm: from initialState='steady' (the quasi-dynamic start)
     the cage speed stays within 0.2 % of the start over 30 ms, where the pure-rolling start
@@ -55,6 +56,7 @@ def _pocket_forces_at_start(mbs, handle):
     return handle.connector.evaluate(0.0, q[idx] + handle.connector.reference, q_t[idx], details=True).cage_force
 
 
+@pytest.mark.slow
 def test_auto_takes_the_combined_start_and_loads_the_pockets(monkeypatch):
     """'auto' starts combined loads from the quasi-dynamic state, whether the axial load alone
     skids (400 N + 100 N: ~71 % slip) or not (2.2 kN + 2 kN); a continuation given too few
@@ -93,6 +95,7 @@ def test_auto_takes_the_combined_start_and_loads_the_pockets(monkeypatch):
     assert not solves
 
 
+@pytest.mark.slow
 def test_pure_radial_start_balances_every_ball():
     """Pure radial load (the README's deep-groove bearing, 10 um clearance, 2.5 kN, 3000 rpm)
     starts from the quasi-dynamic state continued from a seed axial load and taken back to
@@ -128,11 +131,11 @@ def test_a_budgeted_continuation_stops_at_a_fold():
     there from every start). The 'auto' budget stops at two stalls in a row instead of halving
     on towards it (MODEL.md §12a); without a budget the continuation keeps trying."""
     from exudyn_bearing import CWRU_6205_BEARING
-    from exudyn_bearing.bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, file_inputs
+    from exudyn_bearing import BearingSetup
     from exudyn_bearing.solvers import quasidynamic
 
-    bearing, (oil, law, cage, drag) = file_inputs(CWRU_6205_BEARING, lubricant=FILE_LUBRICANT, contact_law=FILE_LAW,
-                                                  cage=FILE_CAGE, ball_drag=FILE_DRAG)
+    s = BearingSetup(CWRU_6205_BEARING)  # (the package's defaults)
+    bearing, oil, law, cage, drag = s.bearing, s.lubricant, s.contact_law, s.cage, s.drag
     balances = []
     make = quasidynamic._Balance.__init__
 

@@ -1,5 +1,4 @@
 """Quasi-static load distribution (MODEL.md §4) against independent numbers."""
-import functools
 import json
 import math
 import subprocess
@@ -11,6 +10,7 @@ from scipy import integrate, optimize
 
 from contact import geometry, hertz
 from exudyn_bearing import REFERENCE_BEARING as B, QuasiStaticError, solve_load_distribution
+from tests.helpers import E_Z, JH_A0, JH_D, JH_DM, JH_E, JH_F, JH_MASS, JH_RP, JH_TUBE, JH_Z, _jh_ball, _jh_contacts, _jh_grooves, _newton, jh_hertz_k, jones_harris  # noqa: E402,F401
 
 E_PRIME = float(hertz.effective_modulus(210e9, 0.3))
 
@@ -20,123 +20,6 @@ def k_eff_at(alpha):
     ks = [hertz.hertz_contact(*geometry.curvature_radii(25e-3, 155e-3, alpha, 0.52, race), E_PRIME).stiffness
           for race in ("inner", "outer")]
     return float(hertz.effective_ball_stiffness(*ks))
-
-
-# ---------------------------------------------------------------------------------------
-# Jones–Harris equilibrium of the geometric mode, written out here from MODEL.md §2–§4
-# (nothing from contact/ or exudyn_bearing/): reference bearing as typed in the paper's
-# table 1a plus f = 0.52 and steel (MODEL.md §8)
-# ---------------------------------------------------------------------------------------
-JH_Z, JH_D, JH_DM, JH_F, JH_A0, JH_MASS = 16, 25e-3, 155e-3, 0.52, math.radians(40.0), 0.064
-JH_E = 210e9 / (1 - 0.3 ** 2)  # E' of steel on steel: 2 / (2 (1 - nu²) / E)
-JH_TUBE = (JH_F - 0.5) * JH_D  # ball centre to groove centre when touching
-JH_RP = JH_DM / 2
-E_Z = np.array([0.0, 0.0, 1.0])
-
-
-def jh_hertz_k(alpha, race):
-    """Brewe–Hamrock K = pi k E' sqrt(E R / (4.5 F³)) at contact angle alpha (MODEL.md §2, §3)."""
-    r_x = JH_D * (JH_DM + (-1.0 if race == "inner" else 1.0) * JH_D * math.cos(alpha)) / (2 * JH_DM)
-    r_y = JH_F * JH_D / (2 * JH_F - 1)
-    ratio = r_y / r_x
-    first, second = 1.5277 + 0.6023 * math.log(ratio), 1.0003 + 0.5968 / ratio
-    radius = 1 / (1 / r_x + 1 / r_y)
-    return math.pi * 1.0339 * ratio ** 0.6360 * JH_E * math.sqrt(second * radius / (4.5 * first ** 3))
-
-
-def _newton(fun, x, tol, step=1e-4, max_iter=60):
-    """Damped Newton with a central-difference Jacobian; stops at |fun(x)| < tol."""
-    r = fun(x)
-    for _ in range(max_iter):
-        if np.linalg.norm(r) < tol:
-            return x
-        jac = np.column_stack([(fun(x + h) - fun(x - h)) / (2 * step) for h in np.eye(len(x)) * step])
-        dx = np.linalg.solve(jac, -r)
-        lam = 1.0
-        while True:
-            trial = x + lam * dx
-            r_trial = fun(trial)
-            if np.linalg.norm(r_trial) < (1 - 1e-4 * lam) * np.linalg.norm(r) or lam < 1e-6:
-                break
-            lam *= 0.5
-        x, r = trial, r_trial
-    assert np.linalg.norm(r) < tol, f"Newton: |residual| {np.linalg.norm(r):.3g}"
-    return x
-
-
-def _jh_grooves(psi, s, shift):
-    """Ball centre and groove centres relative to (r_p e_r): ball offset s = (radial,
-    axial) in its meridional plane at azimuth psi, inner race shifted by (dx, 0, dz); the
-    inner groove centre lies in the INNER race's meridional plane through the ball."""
-    e_r = np.array([math.cos(psi), math.sin(psi), 0.0])
-    rel = (JH_RP + s[0]) * e_r - np.array([shift[0], 0.0, 0.0])
-    e_rho = np.array([rel[0], rel[1], 0.0]) / math.hypot(rel[0], rel[1])
-    c, ca, sa = s[0] * e_r + s[1] * E_Z, math.cos(JH_A0), math.sin(JH_A0)
-    g_i = np.array([shift[0], 0.0, shift[1]]) + JH_RP * (e_rho - e_r) + JH_TUBE * (ca * e_rho + sa * E_Z)
-    g_o = -JH_TUBE * (ca * e_r + sa * E_Z)
-    return e_r, e_rho, c, g_i, g_o
-
-
-def _jh_contacts(psi, s, shift):
-    """((Q, alpha, n) inner, (Q, alpha, n) outer, e_r); n from groove centre through the
-    ball centre to the contact, Q = K(alpha) (|c - g| - (f - 1/2) D)^1.5."""
-    e_r, e_rho, c, g_i, g_o = _jh_grooves(psi, s, shift)
-    out = []
-    for race, g, radial, sgn in (("inner", g_i, e_rho, -1.0), ("outer", g_o, e_r, 1.0)):
-        n = (c - g) / np.linalg.norm(c - g)
-        alpha = math.atan2(sgn * n[2], sgn * (n @ radial))
-        out.append((jh_hertz_k(alpha, race) * max(np.linalg.norm(c - g) - JH_TUBE, 0.0) ** 1.5, alpha, n))
-    return out[0], out[1], e_r
-
-
-def _jh_ball(psi, shift, rate):
-    """Ball at psi in equilibrium of its two contact loads and its centrifugal force
-    m r_c w_c² = ``rate`` r_c at its own orbit radius r_c (the cage holds its azimuth):
-    (Q_i, Q_o, alpha_i, alpha_o, n_i)."""
-    fc = rate * JH_RP
-    e_r, _, _, g_i, g_o = _jh_grooves(psi, np.zeros(2), shift)
-    overlap = np.linalg.norm(g_i - g_o) - 2 * JH_TUBE
-    if overlap <= 0 and fc == 0:
-        return 0.0, 0.0, JH_A0, JH_A0, np.zeros(3)  # a loose ball carries nothing
-    if overlap > 0:  # start on the groove-centre line, overlap halved
-        start = g_o + (JH_TUBE + 0.5 * overlap) * (g_i - g_o) / np.linalg.norm(g_i - g_o)
-    else:  # off the inner race, pressed into the outer one
-        start = g_o + (JH_TUBE + (fc / jh_hertz_k(0.0, "outer")) ** (2 / 3)) * e_r
-
-    def residual(s_um):
-        (q_i, _, n_i), (q_o, _, n_o), e_r = _jh_contacts(psi, s_um * 1e-6, shift)
-        force = rate * (JH_RP + s_um[0] * 1e-6) * e_r - q_i * n_i - q_o * n_o
-        return np.array([force @ e_r, force[2]])
-
-    s_um = _newton(residual, np.array([start @ e_r, start[2]]) * 1e6, tol=1e-9 * max(fc, 100.0))
-    (q_i, a_i, n_i), (q_o, a_o, _), _ = _jh_contacts(psi, s_um * 1e-6, shift)
-    return q_i, q_o, a_i, a_o, n_i
-
-
-@functools.lru_cache(maxsize=None)
-def jones_harris(axial, radial=0.0, rpm=0.0):
-    """Jones–Harris equilibrium (rigid rings, Hertz balls, no tilt): the inner-race shift
-    (dx, dz) for which the balls' contact forces balance (radial, 0, axial), each ball in
-    equilibrium with the centrifugal force m r_c w_c² at Harris's nominal cage speed
-    w_c = w/2 (1 - D cos a0 / d_m). Returns (Q_i, Q_o, alpha_i, alpha_o) per ball (ball 0
-    at +x, the radial load's direction) and the shift (m)."""
-    w_c = rpm * math.pi / 30 / 2 * (1 - JH_D * math.cos(JH_A0) / JH_DM)
-    rate = JH_MASS * w_c ** 2
-    psi = 2 * np.pi * np.arange(JH_Z) / JH_Z
-
-    def balls(x_um):
-        return [_jh_ball(p, x_um * 1e-6, rate) for p in psi]
-
-    def residual(x_um):
-        force = sum(b[0] * b[4] for b in balls(x_um))  # the balls' push on the inner race
-        return np.array([force[0] + radial, force[2] + axial])
-
-    # the axial shift alone first (the axial residual falls monotonically with it)
-    x = np.array([0.0, optimize.brentq(lambda z: residual(np.array([0.0, z]))[1], -500.0, 200.0, xtol=1e-12)])
-    if radial > 0:
-        x = _newton(residual, np.array([10.0, x[1]]), tol=1e-8 * max(axial, radial))
-    per_ball = balls(x)
-    return tuple(np.array([b[k] for b in per_ball]) for k in range(4)) + (x * 1e-6,)
 
 
 def assert_matches_jones_harris(res, jh):

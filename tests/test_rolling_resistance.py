@@ -118,7 +118,7 @@ def test_force_and_moment_on_the_ball_by_hand():
     from contact.ballrace import ContactLaw, ball_race_forces
     from contact.kinematics import ball_race_kinematics
     from exudyn_bearing import REFERENCE_BEARING as B, REFERENCE_LUBRICANT as LUB
-    from tests.test_branches import INNER, R_I, TUBE_I, W_RACE, Z_I, _inner_contacts
+    from tests.helpers import INNER, R_I, TUBE_I, W_RACE, Z_I, _inner_contacts
 
     c, v, w = _inner_contacts((30e-6,), u_x=2e-3, u_y=0.0, spin=0.0)
     kin = ball_race_kinematics(c, v, w, np.zeros(3), np.eye(3), np.zeros(3), W_RACE, (R_I, Z_I, TUBE_I),

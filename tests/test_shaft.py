@@ -3,14 +3,13 @@ textbook limits, and the Exudyn scene of ``demos/hss_shaft.py`` (two bearings on
 ``OnBody`` shaft in one mbs) against that solver (MODEL.md §4; issue 5)."""
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from exudyn_bearing import REFERENCE_BEARING as BRG, solve_load_distribution
 from exudyn_bearing.solvers.shaft import ShaftBearing, solve_shaft
+from tests.helpers import _demo  # noqa: E402,F401
 
 BACK = np.diag([1.0, -1.0, -1.0])
 
@@ -68,14 +67,6 @@ def test_bad_shaft_input_names_the_parameter():
         solve_shaft(_pair(5e-6), rpm=-1.0)
 
 
-def _demo():
-    path = Path(__file__).resolve().parents[1] / "demos" / "hss_shaft.py"
-    spec = importlib.util.spec_from_file_location("hss_shaft_demo", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def test_hss_shaft_scene_matches_the_quasi_static_shaft():
     """demos/hss_shaft.py: shaft (rigid body, speed held by a velocity constraint) on two
     reference bearings attached with races.OnBody, gear load ramped in over 5 ms, 25 ms
@@ -109,6 +100,7 @@ def test_hss_shaft_scene_matches_the_quasi_static_shaft():
     assert dyn["displacement_um"][0] < 0 and dyn["displacement_um"][1] < 0
 
 
+@pytest.mark.slow
 def test_shaft_with_exudyns_default_node_type_matches_the_lie_group_shaft():
     """Issue 16: a shaft made with Exudyn's default node (Euler parameters) or Tait-Bryan
     angles carries the bearings through adapter bodies and joints and gives the same run as

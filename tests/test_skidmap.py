@@ -38,6 +38,7 @@ def test_threshold_interpolation():
     assert t["hirano_minimum_axial"] == pytest.approx(hirano_minimum_axial(B, 1800))
 
 
+@pytest.mark.slow
 def test_local_run_writes_incrementally_and_resumes(tmp_path):
     lines = []
     result = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, out=tmp_path, workers=2,
@@ -79,6 +80,7 @@ def test_failed_point_is_reported_and_the_rest_runs(tmp_path, monkeypatch):
     assert json.loads((tmp_path / "points.jsonl").read_text().splitlines()[0])["error"]
 
 
+@pytest.mark.slow
 def test_dask_local_cluster_gives_identical_results(tmp_path):
     distributed = pytest.importorskip("dask.distributed")
     local = skid_map(axial_force=[1300.0, 3000.0], rpm=[1800.0], time=SHORT, workers=1, progress=None)
@@ -102,24 +104,24 @@ def test_resume_refuses_results_of_other_inputs(tmp_path):
     import dataclasses
 
     from contact.ballrace import ContactLaw
-    from exudyn_bearing import REFERENCE_BEARING
+    from exudyn_bearing import REFERENCE_BEARING, BearingSetup
     from exudyn_bearing.studies.skidmap import _check_inputs
 
     from exudyn_bearing.presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 
-    args = (REFERENCE_BEARING, REFERENCE_LUBRICANT, REFERENCE_DRAG, ContactLaw())
-    _check_inputs(tmp_path, *args)
-    _check_inputs(tmp_path, *args)  # same inputs: fine
+    setup = BearingSetup(REFERENCE_BEARING, REFERENCE_LUBRICANT, REFERENCE_DRAG, contact_law=ContactLaw())
+    _check_inputs(tmp_path, setup)
+    _check_inputs(tmp_path, setup)  # same inputs: fine
     other = dataclasses.replace(REFERENCE_BEARING, balls=15)
     with pytest.raises(ValueError, match="out: .*bearing"):
-        _check_inputs(tmp_path, other, *args[1:])
+        _check_inputs(tmp_path, setup.replace(bearing=other))
     with pytest.raises(ValueError, match="out: .*contact_law"):
-        _check_inputs(tmp_path, *args[:3], ContactLaw(traction="crook"))
+        _check_inputs(tmp_path, setup.replace(contact_law=ContactLaw(traction="crook")))
     old = tmp_path / "old"
     old.mkdir()
     (old / "points.jsonl").write_text("")
     with pytest.raises(ValueError, match="out: .*no record"):
-        _check_inputs(old, *args)
+        _check_inputs(old, setup)
 
 
 def test_failed_points_are_retried_on_resume(tmp_path):

@@ -222,15 +222,16 @@ exu = pytest.importorskip("exudyn")
 
 
 def _state(**kw):
-    from tests.test_compiled import _scene
+    from tests.helpers import _scene
 
     return _scene(axialForce=2200.0, radialForce=2000.0, **kw)
 
 
+@pytest.mark.slow
 def test_oversize_ball_carries_more_in_both_force_paths():
     """Ball 3 made 2 um larger: its inner and outer approach grow by exactly 1 um (compiled
     kernel outputs), nothing else moves; the numpy path's loads agree."""
-    from tests.test_compiled import _both_paths
+    from tests.helpers import _both_paths
 
     extra = np.zeros(B.balls)
     extra[3] = 2e-6
@@ -248,6 +249,7 @@ def test_oversize_ball_carries_more_in_both_force_paths():
     assert np.all(diff[:, np.arange(B.balls) != 3] == 0.0)
 
 
+@pytest.mark.slow
 def test_a_defect_no_ball_touches_leaves_every_force_bit_for_bit():
     """The surface term is a separate branch: where it gives h = 0 the contact is computed
     exactly as for a perfect bearing (the feature costs nothing when off)."""
@@ -257,7 +259,7 @@ def test_a_defect_no_ball_touches_leaves_every_force_bit_for_bit():
     _sc1, con1, q1, qt1 = _state(surface=far)
     np.testing.assert_array_equal(q, q1)
     for path in range(3):
-        from tests.test_compiled import _both_paths
+        from tests.helpers import _both_paths
 
         np.testing.assert_array_equal(_both_paths(con0, q, qt)[path], _both_paths(con1, q, qt)[path])
 
@@ -328,7 +330,7 @@ def test_over_a_notch_edge_the_load_tilts_with_the_ball_centres_path():
     centre's path (eq. 13.2, 13.7): F.t1 / Q = -u / sqrt(R_x² - u²), R_x = r (d_m + D cos a)/d_m
     at the contact's angle (the numpy path); the compiled paths' forces equal it."""
     from contact.ballrace import ContactLaw
-    from tests.test_compiled import _both_paths, _scene
+    from tests.helpers import _both_paths, _scene
 
     _sc, con0, q, _ = _scene(axialForce=1300.0, law=ContactLaw(traction="none"))
     length, u = 1e-3, 0.2e-3

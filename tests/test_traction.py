@@ -14,6 +14,7 @@ from scipy import integrate, optimize
 from contact.lubricant import REFERENCE_LUBRICANT as REF
 from contact.lubricant import Lubricant
 from contact.traction import Traction, crook_traction, newtonian_slope, thermal_factor
+from tests.helpers import _scipy_reference  # noqa: E402,F401
 
 # reference bearing contacts (MODEL.md §8): p_max = 3Q/(2π a b)
 HEAVY = dict(a=2.2e-3, b=0.14e-3, p_max=1.0e9)  # ≈ 650 N, inner race, combined load
@@ -27,35 +28,6 @@ ISO = Lubricant(viscosity=0.04, reference_temperature=30.0, pressure_viscosity=0
 
 def _forces(t):
     return np.array([t.fx, t.fy, t.mz, t.heat], dtype=float)
-
-
-def _scipy_reference(ux, uy, w, a, b, p_max, h, lub=REF, eps=1e-6, lam=None, limit=10000):
-    """∬ (τ_x, τ_y, x τ_y − y τ_x, τ·u) dA by nested adaptive quadrature (scipy quad_vec),
-    both levels split at the spin pole lines x = x_p, y = y_p (MODEL.md §8); with ``lam`` the
-    Crook stress capped smoothly, |τ| = Λ p tanh(|τ_C|/(Λ p)) (MODEL.md §6a)."""
-    c1c = lub.temperature_viscosity / (8.0 * lub.thermal_conductivity)
-    xp, yp = (-uy / w, ux / w) if w != 0 else (math.inf, math.inf)
-
-    def inner(x):
-        ym = a * math.sqrt(max(1.0 - (x / b) ** 2, 0.0))
-
-        def f(y):
-            p = p_max * math.sqrt(max(1.0 - (x / b) ** 2 - (y / a) ** 2, 0.0))
-            eta = lub.viscosity * math.exp(lub.pressure_viscosity * p)
-            vx, vy = ux - w * y, uy + w * x
-            v = math.hypot(vx, vy)
-            s = math.sqrt(eta * c1c) * v
-            g = eta / h * (math.asinh(s) / (s * math.sqrt(1.0 + s * s)) if s > 0 else 1.0)  # Crook: τ = g u
-            if lam is not None and g * v > 0:  # |τ| = τ_L tanh(|τ_C|/τ_L) (0 where p = 0)
-                t_c, t_l = g * v, lam * p
-                g *= t_l * math.tanh(t_c / t_l) / t_c if t_l > 0 else 0.0
-            return np.array([g * vx, g * vy, g * (x * vy - y * vx), g * v * v])
-
-        pts = [yp] if -ym < yp < ym else None
-        return integrate.quad_vec(f, -ym, ym, epsrel=eps, epsabs=0, points=pts, limit=limit)[0]
-
-    pts = [xp] if -b < xp < b else None
-    return integrate.quad_vec(inner, -b, b, epsrel=eps, epsabs=0, points=pts, limit=limit)[0]
 
 
 def _rel_errors(F, R, a, b):

@@ -47,6 +47,7 @@ def test_unloaded_contacts_are_ignored():
     assert mu == pytest.approx(0.05) and text is None
 
 
+@pytest.mark.slow
 def test_combined_load_with_the_paper_law_warns():
     """Paper's pure Crook law, 2.2 kN + 2 kN radial (p_max ~1 GPa at the heaviest ball):
     the traction coefficient exceeds 0.15 within the first millisecond."""

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from tests.test_assembly_start import BEARING_7205
+from tests.helpers import BEARING_7205
 
 #: the user's file: 7205 geometry, a thinner oil and a 5 % oil-air drag
 USER_FILE = BEARING_7205 + """
@@ -81,6 +81,7 @@ def test_item2_the_file_reaches_the_scene_whole(scene):
     assert "viscosity=0.02" in out["lubricant"] and "oil_volume_fraction=0.05" in out["drag"], out
 
 
+@pytest.mark.slow
 def test_item2_and_7_the_cli_run_states_the_files_oil_and_drag(short_run):
     text, data = short_run
     assert data["assumptions"]["oil_volume_fraction"] == 0.05
@@ -95,6 +96,7 @@ def test_item3_a_short_run_is_too_short_to_judge(short_run):
     assert "settled: the integrator" not in text  # the energy line does not claim it settled
 
 
+@pytest.mark.slow
 def test_item4_commands_agree(user_dir):
     radial_only = run(user_dir, "-m", "exudyn_bearing", "simulate", "--bearing", "my7205.toml", "--radial", "300",
                       "--time", "0.002")

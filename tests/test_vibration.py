@@ -135,6 +135,7 @@ def _waviness_run(race, k, amplitude=0.03e-6, end=0.12, settle=0.02):
     return r.time[keep], r.outer_race_force[keep], float(np.mean(r.cage_speed[keep])) / (2 * np.pi)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("race", ["outer", "inner"])
 def test_waviness_selection_rules(race):
     """Pure axial load on the reference bearing (Z = 16), waviness of 0.03 um on one race: the
@@ -197,6 +198,7 @@ def test_perfect_bearing_under_radial_load_vibrates_at_the_ball_pass_frequency()
     assert r.defect_events == []
 
 
+@pytest.mark.slow
 def test_outer_race_defect_repeats_at_the_actual_cage_speed_below_pure_rolling():
     """A 1-mm, 5-um outer-race spall on the reference bearing at 1300 N, 1800 rpm (3.8 %
     kinematic cage slip): the envelope spectrum's line near BPFO, one of its two strongest, is
@@ -217,6 +219,7 @@ def test_outer_race_defect_repeats_at_the_actual_cage_speed_below_pure_rolling()
     assert abs(passages - actual * (r.time[-1] - r.time[0])) <= 1.0
 
 
+@pytest.mark.slow
 def test_notch_envelope_amplitude_converges_under_step_halving():
     """The CWRU notch's strongest envelope line (0.15 s at 20 kHz, 300 N radial, 1797 rpm) at
     the default step (25 us) and at half of it: the same frequency within 0.02 Hz and
@@ -249,6 +252,7 @@ def _handle(bearing, surface, rpm, **load):
                                        surface=surface, show=False, **load)
 
 
+@pytest.mark.slow
 def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
     """B = v √(2g/R_x) / (ω_b δ) (MODEL.md §13c) written out from pure-rolling kinematics and
     the sphere-on-edge drop: the spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial
@@ -309,6 +313,7 @@ def test_strike_number_is_the_edge_speed_over_the_contact_oscillation():
         assert (steprule.strike_step(b, spall, loads, rpm) < math.inf) is strikes
 
 
+@pytest.mark.slow
 def test_spall_that_takes_most_of_the_approach_runs_without_step_cuts():
     """A 1-mm, 2-um outer spall on the 6205 at 300 N radial, 1797 rpm: the ball under the load
     loses 0.62 of its approach over it, its contact unloads to a quarter and reloads at every
@@ -325,6 +330,7 @@ def test_spall_that_takes_most_of_the_approach_runs_without_step_cuts():
     assert r.envelope_peaks[0][0] == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=1.0 / 0.05)
 
 
+@pytest.mark.slow
 def test_hard_strike_amplitude_converges_at_the_strike_step():
     """The spindle's 0.5-mm, 5-µm outer spall at 12 000 rpm, 500 N axial (B = 0.99): the balls
     bounce off the exit edge and rattle between the races at ω_b = 2π 33 kHz. At the default
@@ -354,6 +360,7 @@ def test_hard_strike_amplitude_converges_at_the_strike_step():
     assert coarse > 1.4 * a
 
 
+@pytest.mark.slow
 def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
     """A 1-mm, 20-um inner-race spall on the 6205 at 300 N radial, 1797 rpm: the spall turns
     with the shaft through the load zone once per revolution, so the envelope spectrum has
@@ -373,6 +380,7 @@ def test_inner_race_spall_under_radial_load_shows_bpfi_with_shaft_sidebands():
     assert r.solver["passages_cut"] <= 0.25 * r.solver["passages"]  # 7 of 48 (at 25 us: 12 of 32 in 0.2 s)
 
 
+@pytest.mark.slow
 def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
     """The CWRU ball fault (a 0.18-mm pit, 0.28 mm deep) on a ball of the 6205 at 300 N radial,
     1797 rpm (eq. 13.3). At 0 deg the ball's inner and outer contacts trace one circle on it, so

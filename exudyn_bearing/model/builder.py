@@ -26,7 +26,8 @@ from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from contact.surface import SurfaceModel, surface_record
 from ..bearing import BallDrag, Bearing
-from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE, BearingFile, file_inputs
+from ..bearingfile import as_setup
+from ..setup import FROM_SETUP, BearingSetup
 from ..presets import REFERENCE_BEARING
 from ..races import (NODE_KINEMATICS, Driven, Fixed, Race, default_race_body, move_body, node_rows, node_state,
                      race_adapter, ring_inertia)
@@ -126,13 +127,76 @@ def _check_start_load(value, inner):
     return axial, radial
 
 
-def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFERENCE_BEARING,
-                                lubricant: Lubricant = FILE_LUBRICANT,
+def _check_races(mbs, innerRace, outerRace, setup):
+    """(inner, outer) :class:`Race` of the builder's arguments: defaults ``Driven(1800 rpm)``
+    and the setup's housing, else ``Fixed()``; checked before anything is added to ``mbs``."""
+    inner = innerRace if innerRace is not None else Driven(1800.0)
+    if outerRace is not None:
+        outer = outerRace
+    else:
+        outer = setup.housing.race() if setup.housing is not None else Fixed()
+    for name, race in (("innerRace", inner), ("outerRace", outer)):
+        if not isinstance(race, Race):
+            raise ValueError(f"{name} must be a races.Race, got {race!r}")
+        if race.kind == "body":
+            node_type = mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"]
+            if node_type not in NODE_KINEMATICS:
+                raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing takes rigid-body "
+                                 "nodes of type " + ", ".join(NODE_KINEMATICS) + ": create that body with "
+                                 "nodeType=exu.NodeType.RotationEulerParameters (Exudyn's default) or "
+                                 "RotationRotationVector")
+    if inner.kind == "housing":
+        raise ValueError("innerRace: Housing() carries an outer race; give it as outerRace")
+    return inner, outer
+
+
+def _race_pose(mbs, inner, outer, origin, frame):
+    """(inner race relative to the outer one in the bearing frame — (dx, dy, dz) m and
+    (theta_x, theta_y) rad —, (inner, outer) speed about the axis rad/s): from the user's
+    bodies where a race sits on one, else zero and the races' own speeds."""
+    axis = frame[:, 2]
+    speed = {"inner": inner.speed(0.0), "outer": outer.speed(0.0)}
+    relative = np.zeros(5)
+    for name, race, sign in (("inner", inner, 1.0), ("outer", outer, -1.0)):
+        if race.kind == "body":
+            pos_node, rot_node, _, w_node = node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
+            race_origin = pos_node + rot_node @ np.asarray(race.local_position)
+            relative[:3] += sign * frame.T @ (race_origin - origin)
+            # the race axis in the bearing frame is ~ (theta_y, -theta_x, 1) for a small tilt theta
+            race_axis = frame.T @ rot_node @ np.asarray(race.local_rotation)[:, 2]
+            relative[3:] += sign * np.array([-race_axis[1], race_axis[0]])
+            speed[name] = float(axis @ w_node)
+    return relative, (speed["inner"], speed["outer"])
+
+
+def _add_state_sensor(mbs, nodes, connector):
+    """A user-function sensor storing the bearing's absolute node coordinates and velocities
+    at every sensor write (the source of :meth:`BearingHandle.Results`); it also reports
+    progress where the runner asked for it."""
+    from exudyn.utilities import SensorUserFunction
+
+    ref = connector.reference
+    indices = []
+
+    def record(mbs_, t, sensorNumbers, factors, configuration):
+        if not indices:
+            indices.extend(node_rows(mbs_, nodes))
+        if connector.progress is not None:
+            connector.progress(t)
+        q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)
+        q_t = mbs_.systemData.GetODE2Coordinates_t(configuration=configuration)
+        return np.concatenate([np.asarray(q)[indices] + ref, np.asarray(q_t)[indices]]).tolist()
+
+    return mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
+
+
+def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REFERENCE_BEARING,
+                                lubricant: Lubricant = FROM_SETUP,
                                 *, innerRace: Race | None = None, outerRace: Race | None = None,
                                 axialForce: float = 0.0, radialForce: float = 0.0, startLoad=None,
                                 position=(0.0, 0.0, 0.0), rotationMatrix=np.eye(3),
-                                contactLaw: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE,
-                                ballDrag: BallDrag | None = FILE_DRAG, surface: SurfaceModel = FILE_SURFACE,
+                                contactLaw: ContactLaw = FROM_SETUP, cage: CageModel = FROM_SETUP,
+                                ballDrag: BallDrag | None = FROM_SETUP, surface: SurfaceModel = FROM_SETUP,
                                 innerRaceDisplacement=None,
                                 initialControl: str = "auto", initialState: str = "auto",
                                 recordStates: bool = True, show: bool = True) -> BearingHandle:
@@ -142,14 +206,17 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     Parameters
     ----------
     mbs : exudyn.MainSystem
-    bearing : Bearing, BearingFile or path
-        Geometry and materials (default: the paper's reference bearing). A bearing file
-        (:func:`~exudyn_bearing.bearingfile.load_bearing` or its path) also gives the
-        lubricant, ball drag, cage and contact law, each unless passed here explicitly.
+    bearing : Bearing, BearingSetup or path
+        Geometry and materials (default: the paper's reference bearing). A setup
+        (:class:`~exudyn_bearing.setup.BearingSetup`, e.g. from
+        :func:`~exudyn_bearing.bearingfile.load_bearing`) or a bearing file's path also gives
+        the lubricant, ball drag, cage, contact law, surfaces and housing, each unless
+        passed here explicitly.
     lubricant : contact.lubricant.Lubricant
-        Default: the bearing file's, else the reference oil.
+        Default: the setup's, else the reference oil.
     innerRace, outerRace : Race
-        See :mod:`exudyn_bearing.races`; defaults ``Driven(1800 rpm)`` and ``Fixed()``.
+        See :mod:`exudyn_bearing.races`; defaults ``Driven(1800 rpm)`` and, for the outer
+        race, the setup's housing (``HousingModel.race()``), else ``Fixed()``.
     axialForce, radialForce : float or callable
         Forces on the inner race (a ``Driven``/``Free`` race body), N, constant or a
         function of time t in s (load steps, gusts): axial along +bearing axis (loading the
@@ -223,32 +290,15 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     """
     import exudyn as exu
     import exudyn.graphics as graphics
-    from exudyn.utilities import InertiaSphere, ObjectGenericODE2, RigidBodyInertia, SensorUserFunction
+    from exudyn.utilities import InertiaSphere, ObjectGenericODE2, RigidBodyInertia
 
-    bearing, (lubricant, contactLaw, cage, ballDrag, surface) = file_inputs(
-        bearing, lubricant=lubricant, contactLaw=contactLaw, cage=cage, ballDrag=ballDrag, surface=surface)
-
-    if not isinstance(bearing, Bearing):
-        raise ValueError(f"bearing must be a Bearing, got {type(bearing).__name__}")
-    if not isinstance(lubricant, Lubricant):
-        raise ValueError(f"lubricant must be a Lubricant, got {type(lubricant).__name__}")
-    if surface is not None and not isinstance(surface, SurfaceModel):
-        raise ValueError(f"surface must be a contact.surface.SurfaceModel, got {type(surface).__name__}")
+    if surface is None:
+        surface = SurfaceModel()
+    setup = as_setup(bearing, lubricant=lubricant, contact_law=contactLaw, cage=cage, drag=ballDrag, surface=surface)
+    bearing, lubricant, contactLaw, cage = setup.bearing, setup.lubricant, setup.contact_law, setup.cage
+    ballDrag, surface = setup.drag, setup.surface
     surface_record(surface, bearing)  # its checks against this bearing's geometry, before mbs is touched
-    inner = innerRace if innerRace is not None else Driven(1800.0)
-    outer = outerRace if outerRace is not None else Fixed()
-    for name, race in (("innerRace", inner), ("outerRace", outer)):
-        if not isinstance(race, Race):
-            raise ValueError(f"{name} must be a races.Race, got {race!r}")
-        if race.kind == "body":  # checked before anything is added to mbs
-            node_type = mbs.GetNode(mbs.GetObject(race.body)["nodeNumber"])["nodeType"]
-            if node_type not in NODE_KINEMATICS:
-                raise ValueError(f"{name}: OnBody({race.body}) sits on a {node_type} node; the bearing takes rigid-body "
-                                 "nodes of type " + ", ".join(NODE_KINEMATICS) + ": create that body with "
-                                 "nodeType=exu.NodeType.RotationEulerParameters (Exudyn's default) or "
-                                 "RotationRotationVector")
-    if inner.kind == "housing":
-        raise ValueError("innerRace: Housing() carries an outer race; give it as outerRace")
+    inner, outer = _check_races(mbs, innerRace, outerRace, setup)
     axial_of_t, radial_of_t = _check_force("axialForce", axialForce), _check_force("radialForce", radialForce)
     axial, radial = float(axial_of_t(0.0)), float(radial_of_t(0.0))
     loaded = bool(axial or radial) or callable(axialForce) or callable(radialForce)
@@ -260,18 +310,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     axis = frame[:, 2]
 
     # -- initial configuration from the quasi-static solution ----------------------------
-    speed = {"inner": inner.speed(0.0), "outer": outer.speed(0.0)}
-    relative = np.zeros(5)
-    for name, race, sign in (("inner", inner, 1.0), ("outer", outer, -1.0)):
-        if race.kind == "body":
-            pos_node, rot_node, _, w_node = node_state(mbs, mbs.GetObject(race.body)["nodeNumber"])
-            race_origin = pos_node + rot_node @ np.asarray(race.local_position)
-            relative[:3] += sign * frame.T @ (race_origin - origin)
-            # the race axis in the bearing frame is ~ (theta_y, -theta_x, 1) for a small tilt theta
-            race_axis = frame.T @ rot_node @ np.asarray(race.local_rotation)[:, 2]
-            relative[3:] += sign * np.array([-race_axis[1], race_axis[0]])
-            speed[name] = float(axis @ w_node)
-    w_i, w_o = speed["inner"], speed["outer"]
+    relative, (w_i, w_o) = _race_pose(mbs, inner, outer, origin, frame)
     rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
     if innerRaceDisplacement is not None:
         shift = np.asarray(innerRaceDisplacement, dtype=float)
@@ -416,11 +455,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
         race_items[name] = (body, node)
         layout[name] = len(nodes)
         nodes.append(node)
-    connector = BearingConnector(bearing, lubricant, contactLaw, cage, ballDrag, {"inner": inner, "outer": outer},
-                                 layout, origin, frame, race_frames,
-                                 lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held, driven,
-                                 surface=surface,
-                                 ball_circles=_ball_circles(frame, p_out - c_loc, e_z, omega_loc, w_c))
+    connector = BearingConnector(setup, {"inner": inner, "outer": outer}, layout, origin, frame, race_frames,
+                                 lambda t: frame @ np.array([radial_of_t(t), 0.0, axial_of_t(t)]), held,
+                                 driven=driven, ball_circles=_ball_circles(frame, p_out - c_loc, e_z, omega_loc, w_c))
     connector.reference = np.concatenate([np.asarray(mbs.GetNodeParameter(n, "referenceCoordinates"), dtype=float)
                                           for n in nodes])
     if connector.surface is not None:  # the start carries the surfaces at t = 0 (MODEL.md §13d)
@@ -440,20 +477,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingFile | str = REFE
     # the Newton start from the previous acceleration (MODEL.md §10b), for plain SolveDynamic
     # scenes too; SolverSettings(predictor=False) turns it off for a run_solver run
     install_predictor(mbs, nodes, steady_start=steady is not None)
-    sensor = None
-    if recordStates:
-        indices = []
-
-        def record(mbs_, t, sensorNumbers, factors, configuration):
-            if not indices:
-                indices.extend(node_rows(mbs_, nodes))
-            if connector.progress is not None:
-                connector.progress(t)
-            q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)
-            q_t = mbs_.systemData.GetODE2Coordinates_t(configuration=configuration)
-            return np.concatenate([np.asarray(q)[indices] + ref, np.asarray(q_t)[indices]]).tolist()
-
-        sensor = mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
+    sensor = _add_state_sensor(mbs, nodes, connector) if recordStates else None
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
                          connector, nodes, loads, steady, quasi, housing_spring)

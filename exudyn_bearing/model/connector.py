@@ -12,12 +12,10 @@ from dataclasses import replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import ContactLaw, RaceContact, ball_race_forces, with_surface
+from contact.ballrace import RaceContact, ball_race_forces, with_surface
 from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
-from contact.lubricant import Lubricant
-from contact.surface import SurfaceModel, surface_record
+from contact.surface import surface_record
 from contact.terms import term_record
-from ..bearing import BallDrag, Bearing
 from ..cage import CageModel
 from ..jacobian import block_jacobian
 from ..races import Race
@@ -32,9 +30,10 @@ class BearingConnector(ConnectorDiagnostics):
 
     Parameters
     ----------
-    bearing, lubricant, law, cage, drag
-        Physics (see :class:`contact.ballrace.ContactLaw`, :class:`CageModel`,
-        :class:`exudyn_bearing.bearing.BallDrag`; ``drag=None``: no drag).
+    setup : exudyn_bearing.setup.BearingSetup
+        The bearing and its physics — lubricant, contact law, cage, ball drag (None: no
+        drag), surfaces (MODEL.md §13; perfect ones cost nothing) — kept as ``bearing``,
+        ``lubricant``, ``law``, ``cage``, ``drag`` and ``surface`` (None where perfect).
     races : dict
         ``{'inner': Race, 'outer': Race}``.
     layout : dict
@@ -56,8 +55,6 @@ class BearingConnector(ConnectorDiagnostics):
         kg m²). Its axial torque is I (dw/dt + (w_ref - w)/tau), tau = 1 ms: the
         feed-forward makes the race follow the prescribed speed, the weak feedback removes
         integration drift.
-    surface : contact.surface.SurfaceModel, optional
-        Defects and waviness (MODEL.md §13); None: perfect surfaces.
     ball_circles : ndarray (Z, 2, 3), optional
         Per ball, the zero direction and spin axis (ball body frame) of the circle a ball
         defect's ``angle_deg`` is measured on (:func:`contact.surface.ball_circles`, the default).
@@ -67,12 +64,12 @@ class BearingConnector(ConnectorDiagnostics):
     #: largest admissible elastic approach, fraction of D (the 100 kN case reaches ~0.3 %)
     max_penetration = 0.02
 
-    def __init__(self, bearing: Bearing, lubricant: Lubricant, law: ContactLaw, cage: CageModel,
-                 drag: BallDrag | None, races: dict, layout: dict, frame_origin, frame_rotation,
-                 race_frames: dict, applied_force, held: dict, driven: dict | None = None,
-                 surface: SurfaceModel | None = None, ball_circles=None):
-        self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, cage, drag
-        self.surface = surface if surface is not None and surface.active else None
+    def __init__(self, setup, races: dict, layout: dict, frame_origin, frame_rotation, race_frames: dict,
+                 applied_force, held: dict, *, driven: dict | None = None, ball_circles=None):
+        self.setup = setup
+        bearing, lubricant, law, cage = setup.bearing, setup.lubricant, setup.contact_law, setup.cage
+        self.bearing, self.lubricant, self.law, self.cage, self.drag = bearing, lubricant, law, setup.cage, setup.drag
+        self.surface = setup.surface if setup.surface.active else None
         #: what the builder's surface start did (:class:`exudyn_bearing.solvers.surface_start.SurfaceStart`)
         self.surface_start = None
         self.terms = term_record(law, lubricant, bearing.ball_diameter,

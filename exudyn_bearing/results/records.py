@@ -65,6 +65,17 @@ def inputs_record(bearing, **inputs) -> dict:
     return {"bearing": repr(bearing)} | {k: repr(v) for k, v in inputs.items()} | {"version": package}
 
 
+def setup_inputs(setup, **settings) -> dict:
+    """:func:`inputs_record` of a :class:`~exudyn_bearing.setup.BearingSetup` and ``settings``:
+    every part, the surfaces and housing where the setup has them (a perfect bearing on a
+    fixed outer race is recorded as before they existed)."""
+    extra = {"surface": setup.surface} if setup.surface.active else {}
+    if setup.housing is not None:
+        extra["housing"] = setup.housing
+    return inputs_record(setup.bearing, lubricant=setup.lubricant, drag=setup.drag, contact_law=setup.contact_law,
+                         cage=setup.cage, **extra, **settings)
+
+
 def assumptions_record(drag=None, contact_law=None, lubricant=None) -> dict:
     """The physics choices a reader needs beside the numbers (issue 34): the ball drag's
     coefficient and oil volume fraction (None: no drag), whether rolling resistance and the

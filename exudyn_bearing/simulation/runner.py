@@ -12,14 +12,15 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from ..bearing import BallDrag, Bearing
-from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
+from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..errors import BearingSimulationError
 from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
 from ..presets import REFERENCE_BEARING
 from ..races import node_rows
 from ..renamed import accepts_old_names
-from ..results.records import assumptions_record, inputs_record, units_of
+from ..results.records import assumptions_record, setup_inputs, units_of
+from ..setup import FROM_SETUP, BearingSetup
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -402,11 +403,11 @@ class SimulationSummary:
 
 
 @accepts_old_names
-def simulate(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant=FILE_LUBRICANT, *,
+def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubricant=FROM_SETUP, *,
              axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
-             settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FILE_DRAG,
-             contact_law: ContactLaw = FILE_LAW, cage: CageModel = FILE_CAGE, error_estimate: bool = False,
-             initial_state: str = "auto") -> SimulationSummary:
+             settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FROM_SETUP,
+             contact_law: ContactLaw = FROM_SETUP, cage: CageModel = FROM_SETUP, surface=FROM_SETUP,
+             error_estimate: bool = False, initial_state: str = "auto") -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
 
@@ -416,25 +417,29 @@ def simulate(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
     estimate of the error of the reported run (its error is ~4/3 of it at order 2).
     ``initial_state``: ``CreateAngularContactBearing(initialState=...)`` — 'auto' starts a
     pure axial load from its steady rolling state (MODEL.md §12). ``bearing`` may be a
-    bearing file or its path: its lubricant, ball drag, cage and contact law are used unless
-    passed explicitly.
+    :class:`~exudyn_bearing.setup.BearingSetup` or a bearing file's path: all its parts are
+    used — lubricant, ball drag, cage, contact law, surfaces (defects and waviness, MODEL.md
+    §13; the step then also resolves the defect passages, ``RecommendedSurfaceStep``) and
+    housing (the outer race on it, §13a) — each unless passed explicitly.
     """
     import exudyn as exu
 
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven, Fixed
 
-    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
-                                                                     contact_law=contact_law, cage=cage)
-
+    setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage,
+                     surface=surface)
     if not (math.isfinite(time) and time > 0):
         raise ValueError(f"time must be positive, got {time!r}")
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
-    handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=Fixed(),
-                                         axialForce=axial_force, radialForce=radial_force, contactLaw=contact_law,
-                                         cage=cage, ballDrag=ball_drag, initialState=initial_state, show=False)
+    outer = setup.housing.race() if setup.housing is not None else Fixed()
+    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=outer,
+                                         axialForce=axial_force, radialForce=radial_force,
+                                         initialState=initial_state, show=False)
     mbs.Assemble()
+    if settings.step is None and setup.surface.defects:  # the defect passages set the step too (MODEL.md §13c)
+        settings = replace(settings, step=min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)))
     info = run_solver(mbs, [handle], time, settings)
     results = handle.Results(mbs)
     summary = results.summary()
@@ -443,9 +448,8 @@ def simulate(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
         finer = replace(settings, step=0.5 * info.solver["step"], output_step=settings.output_step,
                         relative_tolerance=0.5 * settings.relative_tolerance,
                         absolute_tolerance=0.5 * info.solver["absolute_tolerance"])
-        ref = simulate(bearing, lubricant, axial_force=axial_force, radial_force=radial_force, rpm=rpm, time=time,
-                       settings=finer, ball_drag=ball_drag,
-                       contact_law=contact_law, cage=cage, initial_state=initial_state)
+        ref = simulate(setup, axial_force=axial_force, radial_force=radial_force, rpm=rpm, time=time,
+                       settings=finer, initial_state=initial_state)
         keys = ("cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
                 "max_inner_slip")
         other = ref.details | {k: getattr(ref, k) for k in ("cage_slip_percent", "kinematic_cage_slip_percent",
@@ -461,6 +465,5 @@ def simulate(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
                              {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
-                             inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
-                                           cage=cage, initial_state=initial_state),
-                             info.cpu_time_s, assumptions_record(ball_drag, contact_law, lubricant))
+                             setup_inputs(setup, initial_state=initial_state),
+                             info.cpu_time_s, assumptions_record(setup.drag, setup.contact_law, setup.lubricant))

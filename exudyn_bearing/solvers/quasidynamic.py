@@ -32,7 +32,11 @@ import numpy as np
 from contact import cage as cage_physics
 from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics
+from ..bearing import Bearing
+from ..bearingfile import as_setup
+from ..cage import CageModel
 from ..renamed import accepts_old_names
+from ..setup import FROM_SETUP, refuse_surface
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
 from .steady import contact_constants, steady_state
@@ -235,9 +239,9 @@ def seed_axial_load(axial: float, radial: float) -> float:
 
 
 @accepts_old_names
-def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force: float, rpm: float,
+def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, radial_force: float, rpm: float,
                         outer_rpm: float = 0.0,
-                        ball_drag=None, contact_law: ContactLaw = ContactLaw(), cage=None, steady=None,
+                        ball_drag=FROM_SETUP, contact_law: ContactLaw = FROM_SETUP, cage=FROM_SETUP, steady=None,
                         tol: float = 1e-8, max_steps: int | None = None,
                         max_step: float | None = None) -> AzimuthStates:
     """The quasi-dynamic state under ``axial_force`` + ``radial_force`` load (N; radial along the bearing
@@ -250,8 +254,16 @@ def combined_load_state(bearing, lubricant, *, axial_force: float, radial_force:
     the secant extrapolation of the two before; under pure radial load the seed's axial load
     is then taken back to zero the same way. ``converged`` False with a ``message`` where the
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
-    then not be used."""
+    then not be used. ``bearing`` a Bearing, a setup or a bearing file's path: the setup's
+    lubricant, drag, law and cage unless passed (a plain Bearing: no cage unless passed);
+    its defects and waviness are refused (they have no steady state)."""
     start = _time.perf_counter()
+    plain = isinstance(bearing, Bearing)
+    setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
+                     cage=CageModel() if cage is None else cage)
+    refuse_surface(setup, "combined_load_state", "simulate or vibration")
+    bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
+    cage = None if cage is None or (plain and cage is FROM_SETUP) else setup.cage
     seed = seed_axial_load(axial_force, radial_force)
     if steady is None:
         steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,

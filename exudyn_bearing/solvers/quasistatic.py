@@ -29,10 +29,12 @@ import numpy as np
 
 from contact import geometry
 from ..bearing import Bearing
+from ..bearingfile import as_setup
 from ..errors import QuasiStaticError
 from ..jacobian.differences import central_jacobian
 from ..renamed import accepts_old_names
 from ..results.records import units_of
+from ..setup import FROM_SETUP, BearingSetup, refuse_surface
 from .fixed_angle import fixed_angle_balance
 
 __all__ = ["LoadDistribution", "QuasiStaticError", "solve_load_distribution"]
@@ -285,16 +287,19 @@ def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> 
 
 
 @accepts_old_names
-def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_force: float = 0.0, rpm: float = 0.0,
-                            *, moment: tuple[float, float] | None = None, mode: str = "geometric",
-                            hold_axial: bool = False, hertz_method: str = "fit", tol: float = 1e-10,
+def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: float = 0.0, radial_force: float = 0.0,
+                            rpm: float = 0.0, *, moment: tuple[float, float] | None = None, mode: str = "geometric",
+                            hold_axial: bool = False, hertz_method: str = FROM_SETUP, tol: float = 1e-10,
                             max_iter: int = 60, outer_rpm: float = 0.0,
                             displacement=None, cage_speed=None) -> LoadDistribution:
     """Quasi-static load distribution (MODEL.md §4).
 
     Parameters
     ----------
-    bearing : Bearing
+    bearing : Bearing, BearingSetup or path
+        A setup's contact law gives the Hertz method unless ``hertz_method`` is passed; its
+        lubricant, drag and cage do not enter a quasi-static balance (MODEL.md §4), its
+        defects and waviness are refused (a perfect bearing's distribution).
     axial_force, radial_force : float
         Applied forces on the inner race, N (axial along +z, radial along +x), >= 0.
     rpm : float
@@ -310,7 +315,8 @@ def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_f
         Hold the axial inner-race displacement at zero (the axial force becomes a
         reaction), e.g. pure radial load on a single angular-contact bearing.
     hertz_method : {'fit', 'exact'}
-        Brewe–Hamrock fits or exact elliptic integrals for the Hertz stiffness.
+        Brewe–Hamrock fits or exact elliptic integrals for the Hertz stiffness (default:
+        the setup's contact law's, 'fit' for a plain Bearing).
     tol : float
         Relative force-balance tolerance of the Newton–Raphson iterations.
     outer_rpm : float
@@ -332,6 +338,13 @@ def solve_load_distribution(bearing: Bearing, axial_force: float = 0.0, radial_f
         Newton–Raphson did not converge (e.g. a radial load with no axial force on a
         bearing that cannot carry it).
     """
+    if not isinstance(bearing, Bearing):  # (the builder's hot loop passes a Bearing)
+        setup = as_setup(bearing)
+        refuse_surface(setup, "solve_load_distribution", "simulate or vibration")
+        bearing = setup.bearing
+        hertz_method = setup.contact_law.hertz_method if hertz_method is FROM_SETUP else hertz_method
+    if hertz_method is FROM_SETUP:
+        hertz_method = "fit"
     axial_force, radial_force = _check_load("axial_force", axial_force), _check_load("radial_force", radial_force)
     rpm = _check_load("rpm", rpm)
     if not math.isfinite(outer_rpm):

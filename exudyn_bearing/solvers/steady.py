@@ -29,11 +29,13 @@ from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
 from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
-from ..bearingfile import FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, FileOr, file_inputs
+from ..bearingfile import as_setup
+from ..cage import CageModel
+from ..setup import FROM_SETUP, BearingSetup, refuse_surface
 from ..presets import REFERENCE_BEARING
 from ..renamed import accepts_old_names
 from ..results.outputs import cage_slip
-from ..results.records import inputs_record, units_of
+from ..results.records import setup_inputs, units_of
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
 from .raceway import raceway_control
@@ -199,16 +201,18 @@ class _OneBall:
 
 
 @accepts_old_names
-def steady_state(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant: Lubricant = FILE_LUBRICANT, *,
-                 axial_force: float, rpm: float, outer_rpm: float = 0.0, ball_drag: BallDrag | None = FILE_DRAG,
-                 contact_law: ContactLaw = FILE_LAW, cage=FileOr(None, "None"), tol: float = 1e-8) -> SteadyState:
+def steady_state(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubricant: Lubricant = FROM_SETUP, *,
+                 axial_force: float, rpm: float, outer_rpm: float = 0.0, ball_drag: BallDrag | None = FROM_SETUP,
+                 contact_law: ContactLaw = FROM_SETUP, cage=FROM_SETUP, tol: float = 1e-8) -> SteadyState:
     """Steady rolling state under pure axial load (MODEL.md §12).
 
     Parameters
     ----------
     bearing, lubricant
-        As for :func:`exudyn_bearing.simulate` (a bearing file, or its path, gives the
-        lubricant, ball drag, contact law and cage unless they are passed explicitly).
+        As for :func:`exudyn_bearing.simulate` (a setup, or a bearing file's path, gives the
+        lubricant, ball drag, contact law and cage unless they are passed explicitly). A
+        setup with defects or waviness is refused (they have no steady state); its housing
+        carries the load without changing the balls' state.
     axial_force : float
         Axial load on the inner race, N (> 0).
     rpm, outer_rpm : float
@@ -219,7 +223,8 @@ def steady_state(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubri
         Ball–race physics, as in the dynamic model.
     cage : CageModel, optional
         Its guiding land's friction torque (``land_width`` > 0, MODEL.md §11d), with the cage
-        centred, loads the balls through the pockets; None or no land friction: a free cage.
+        centred, loads the balls through the pockets; None or no land friction (the
+        default ``CageModel()``): a free cage.
     tol : float
         Largest scaled residual accepted (forces relative to F_a / (Z sin a0)).
 
@@ -236,8 +241,11 @@ def steady_state(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubri
         Non-finite or non-positive ``axial_force``, non-finite speeds.
     """
     start = _time.perf_counter()
-    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
-                                                                     contact_law=contact_law, cage=cage)
+    setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
+                     cage=CageModel() if cage is None else cage)
+    refuse_surface(setup, "steady_state", "simulate or vibration")
+    bearing, lubricant, ball_drag, contact_law, cage = (setup.bearing, setup.lubricant, setup.drag, setup.contact_law,
+                                                        setup.cage)
     for name, value in (("axial_force", axial_force), ("rpm", rpm), ("outer_rpm", outer_rpm)):
         if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
             raise ValueError(f"{name} must be a finite number, got {value!r}")
@@ -276,8 +284,7 @@ def steady_state(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubri
         if converged:
             break
     ball.budget = math.inf
-    inputs = inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage,
-                           outer_rpm=outer_rpm)
+    inputs = setup_inputs(setup, outer_rpm=outer_rpm)
     if sol is None:  # every start ran out of its budget
         return _result(bearing, ball, x, axial_force, rpm, w_i, w_o, math.inf, False,
                        f"no steady state found: every start took more than {START_BUDGET} evaluations",

@@ -12,29 +12,36 @@ import numpy as np
 
 from contact.ballrace import TRACTION_MODELS
 from contact.ballrace import ContactLaw as ContactLawDefaults
-from ..bearingfile import BearingFile, load_bearing
+from ..bearingfile import as_setup
 from ..presets import REFERENCE_BEARING
+from ..setup import FROM_SETUP, BearingSetup
 from ..results.records import assumptions_line, assumptions_record
 
 
-def _setup(path) -> BearingFile:
-    if not path:
-        return BearingFile(REFERENCE_BEARING)
-    try:
-        return load_bearing(path)
-    except OSError as err:
-        raise ValueError(f"--bearing: cannot read {path} ({err.strerror or err})") from None
+def _setup(args, **changes) -> BearingSetup:
+    """The setup of ``--bearing`` (the reference bearing without one), the command's contact-law
+    options applied, and ``changes``; the one place a command reads its bearing."""
+    if not args.bearing:
+        setup = BearingSetup(REFERENCE_BEARING)
+    else:
+        try:
+            setup = as_setup(args.bearing)
+        except ValueError as err:
+            raise ValueError(f"--bearing: {err}") from None
+    if getattr(args, "no_drag", False):
+        changes["drag"] = None
+    return setup.replace(contact_law=_law(args, setup), **changes)
 
 
 def _loads(args) -> int:
     from ..solvers.quasistatic import solve_load_distribution
 
-    setup = _setup(args.bearing)
+    setup = _setup(args)
     result = solve_load_distribution(
-        setup.bearing, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
+        setup, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
         moment=tuple(args.moment) if args.moment else None,
         mode="fixed-angle" if args.fixed_angle else "geometric", hold_axial=args.hold_axial,
-        hertz_method="exact" if args.exact_hertz else "fit")
+        hertz_method="exact" if args.exact_hertz else FROM_SETUP)
     if args.json:
         from ..results.records import inputs_record
 
@@ -68,7 +75,9 @@ def _simulate(args) -> int:
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
-    setup = _setup(args.bearing)
+    setup = _setup(args)
+    if args.order is not None:
+        setup = setup.replace(contact_law=_law(args, setup, quadrature_order=args.order))
     if args.plot:
         from pathlib import Path
 
@@ -77,10 +86,8 @@ def _simulate(args) -> int:
             raise ValueError(f"--plot: the folder of {args.plot} does not exist ({folder})")
     settings = SolverSettings(solver=args.solver, step=args.step,
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
-    summary = simulate(setup.bearing, setup.lubricant, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm,
-                       time=args.time, settings=settings, ball_drag=None if args.no_drag else setup.drag,
-                       cage=setup.cage, contact_law=_law(args, setup, quadrature_order=args.order),
-                       error_estimate=args.error_estimate, initial_state=args.start)
+    summary = simulate(setup, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
+                       settings=settings, error_estimate=args.error_estimate, initial_state=args.start)
     data = summary.to_dict()
     if args.plot:
         from ..results.plots import plot_run
@@ -128,18 +135,24 @@ def _simulate(args) -> int:
 def _vibration(args) -> int:
     from pathlib import Path
 
-    from ..races import Housing
+    from dataclasses import replace
+
+    from ..races import HousingModel
     from .vibration import plot_vibration, vibration, write_signal
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
-    setup = _setup(args.bearing)
+    setup = _setup(args)
+    # the file's [housing] (else HousingModel()), with what the options change
+    housing = setup.housing or HousingModel()
+    changes = {k: v for k, v in (("frequency", args.housing_frequency), ("mass", args.housing_mass),
+                                 ("damping_ratio", args.housing_damping)) if v is not None}
+    setup = setup.replace(housing=replace(housing, **changes))
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                        sample_rate=args.sample_rate, settle=args.settle, band=tuple(args.band) if args.band else None,
-                       housing=Housing(frequency=args.housing_frequency, mass=args.housing_mass,
-                                       dampingRatio=args.housing_damping), error_estimate=args.error_estimate)
+                       error_estimate=args.error_estimate)
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
@@ -206,13 +219,10 @@ def _steady(args) -> int:
     if not args.axial > 0:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
-    setup = _setup(args.bearing)
-    law, drag = _law(args, setup), None if args.no_drag else setup.drag
-    state = steady_state(setup.bearing, setup.lubricant, axial_force=args.axial, rpm=args.rpm, ball_drag=drag,
-                         contact_law=law,
-                         cage=setup.cage)
+    setup = _setup(args)
+    state = steady_state(setup, axial_force=args.axial, rpm=args.rpm)
     data = state.to_dict()
-    data["assumptions"] = assumptions_record(drag, law, setup.lubricant)
+    data["assumptions"] = assumptions_record(setup.drag, setup.contact_law, setup.lubricant)
     data["units"].update(units_of({"assumptions": data["assumptions"]}))
     criteria = {"hirano_minimum_axial": hirano_minimum_axial(setup.bearing, args.rpm),
                 "gyroscopic_minimum_axial": gyroscopic_minimum_axial(
@@ -244,7 +254,7 @@ def _steady(args) -> int:
 def _skid_map(args) -> int:
     from . import skidmap
 
-    setup = _setup(args.bearing)
+    setup = _setup(args)
     client = None
     if args.scheduler:
         try:
@@ -259,11 +269,10 @@ def _skid_map(args) -> int:
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
           f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
 
-    result = skidmap.skid_map(setup.bearing, setup.lubricant, axial_force=skidmap.parse_range(args.axial),
+    result = skidmap.skid_map(setup, axial_force=skidmap.parse_range(args.axial),
                               radial_force=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
-                              time=args.time, ball_drag=setup.drag, out=args.out, workers=args.workers, client=client,
-                              progress=lambda line: print(line, flush=True),
-                              contact_law=_law(args, setup), refine=not args.no_refine, cage=setup.cage)
+                              time=args.time, out=args.out, workers=args.workers, client=client,
+                              progress=lambda line: print(line, flush=True), refine=not args.no_refine)
     print(result.markdown())
     print(f"wrote {args.out}/" + ", ".join(result.files))
     if "skid_map.png" not in result.files:
@@ -281,16 +290,14 @@ def _render(args) -> int:
 
     if not (math.isfinite(args.time) and args.time > 0):
         raise ValueError(f"--time must be a positive number of seconds, got {args.time!r}")
-    setup = _setup(args.bearing)
+    setup = _setup(args)
     if args.gif:
         from pathlib import Path
 
         if not Path(args.gif).resolve().parent.is_dir():
             raise ValueError(f"--gif: the folder of {args.gif} does not exist")
     files = render_run(args.out, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
-                       frames=args.frames, backend=args.backend, contact_law=_law(args, setup),
-                       bearing=setup.bearing, lubricant=setup.lubricant, animation=args.gif, cage=setup.cage,
-                       ball_drag=setup.drag)
+                       frames=args.frames, backend=args.backend, bearing=setup, animation=args.gif)
     print(f"wrote {len(files)} frame(s): {', '.join(str(f) for f in files)}")
     return 0
 
@@ -301,10 +308,10 @@ def _law(args, setup, **kw):
     from dataclasses import replace
 
     changes = {k: v for k, v in kw.items() if v is not None}
-    if args.traction is not None:
+    if getattr(args, "traction", None) is not None:
         changes["traction"] = args.traction
     for flag in ("rolling_resistance", "thermal_film"):
-        if getattr(args, flag):
+        if getattr(args, flag, False):
             changes[flag] = True
     return replace(setup.contact_law, **changes)
 
@@ -450,9 +457,10 @@ def build_parser() -> argparse.ArgumentParser:
                                                                         "anti-aliasing filter at 0.4 x this rate)")
     p.add_argument("--band", type=float, nargs=2, metavar=("LOW", "HIGH"),
                    help="envelope band, Hz (default: 0.6-1.4 x the housing resonance)")
-    p.add_argument("--housing-frequency", type=float, default=3000.0, help="housing resonance, Hz")
-    p.add_argument("--housing-mass", type=float, default=2.0, help="housing mass (ring included), kg")
-    p.add_argument("--housing-damping", type=float, default=0.05, help="housing damping ratio")
+    p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "
+                                                           "[housing], else 3000)")
+    p.add_argument("--housing-mass", type=float, help="housing mass (ring included), kg (default: the file's, else 2)")
+    p.add_argument("--housing-damping", type=float, help="housing damping ratio (default: the file's, else 0.05)")
     p.add_argument("--out", default="out/vibration", help="output directory (signal.csv, vibration.json)")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the changes of the strongest envelope line "

@@ -4,10 +4,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from dataclasses import replace
+
+from ..bearingfile import as_setup
 from ..model.builder import CreateAngularContactBearing
+from ..presets import REFERENCE_BEARING
 from ..races import Driven, Fixed, node_rows
 from ..renamed import accepts_old_names
 from ..results.graphics import AddBearingGraphics, render_frames, write_animation
+from ..setup import FROM_SETUP
 from ..simulation.runner import SolverSettings, run_solver
 
 __all__ = ["render_run"]
@@ -15,31 +20,32 @@ __all__ = ["render_run"]
 
 @accepts_old_names
 def render_run(out_dir, *, axial_force=1300.0, radial_force=0.0, rpm=1800.0, time=0.002, frames=4, size=(800, 600),
-               backend="auto", contact_law=None, bearing=None, lubricant=None, animation=None, cage=None,
-               ball_drag="default"):
-    """Simulate ``bearing`` (default: the reference bearing; ``lubricant`` likewise; inner race
-    driven at ``rpm``, outer race fixed) for
+               backend="auto", contact_law=FROM_SETUP, bearing=REFERENCE_BEARING, lubricant=FROM_SETUP, animation=None,
+               cage=FROM_SETUP, ball_drag=FROM_SETUP):
+    """Simulate ``bearing`` (a Bearing, setup or bearing file's path; default: the reference
+    bearing; inner race driven at ``rpm``, outer race fixed or on the setup's housing) for
     ``time`` s with :func:`AddBearingGraphics` and write ``frames`` PNG frames spread over
     the run (the CLI's ``render`` command), each labelled with its time and the slip colour
-    scale; ``contact_law`` a :class:`contact.ballrace.ContactLaw` (default: the builder's);
-    ``animation``: also write the frames as an animated GIF to this path; ``cage`` a
-    :class:`~exudyn_bearing.cage.CageModel` and ``ball_drag`` a ball drag (None: none) where
-    not the builder's defaults. Returns the written paths (frames, then the animation)."""
+    scale. The setup's parts — lubricant, ``contact_law``, ``cage``, ``ball_drag`` (None:
+    none), surfaces (the step then resolves the defect passages, as in ``simulate``) and
+    housing — unless passed here. ``animation``: also write the frames as an animated GIF
+    to this path. Returns the written paths (frames, then the animation)."""
     import exudyn as exu
 
     if not (isinstance(frames, int) and frames >= 1):
         raise ValueError(f"frames must be a positive integer, got {frames!r}")
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
-    kw = {} if contact_law is None else dict(contactLaw=contact_law)
-    kw.update({k: v for k, v in (("bearing", bearing), ("lubricant", lubricant), ("cage", cage)) if v is not None})
-    if ball_drag != "default":
-        kw["ballDrag"] = ball_drag
-    h = CreateAngularContactBearing(mbs, innerRace=Driven(rpm), outerRace=Fixed(), axialForce=axial_force,
-                                    radialForce=radial_force, **kw)
+    setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag)
+    outer = setup.housing.race() if setup.housing is not None else Fixed()
+    h = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=outer, axialForce=axial_force,
+                                    radialForce=radial_force)
     AddBearingGraphics(mbs, h)
     mbs.Assemble()
-    run_solver(mbs, [h], time, SolverSettings())
+    settings = SolverSettings()
+    if setup.surface.defects:  # the defect passages set the step too (MODEL.md §13c)
+        settings = replace(settings, step=min(h.RecommendedStep(), h.RecommendedSurfaceStep(rpm)))
+    run_solver(mbs, [h], time, settings)
     t, q, q_t = h.States(mbs)
     idx = node_rows(mbs, h.nodeNumbers)
     n_sys = len(mbs.systemData.GetODE2Coordinates())

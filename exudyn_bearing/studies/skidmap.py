@@ -23,13 +23,14 @@ import numpy as np
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
-from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, BearingFile, file_inputs
+from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
-from ..presets import REFERENCE_BEARING, REFERENCE_DRAG, REFERENCE_LUBRICANT
+from ..presets import REFERENCE_BEARING
 from ..renamed import accepts_old_names
 from ..results.outputs import settled_label
-from ..results.records import inputs_record, units_of
+from ..results.records import setup_inputs, units_of
+from ..setup import FROM_SETUP, BearingSetup
 from ..solvers.steady import steady_state
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
@@ -89,7 +90,7 @@ class SkidPoint:
 
 def _run_point(args) -> dict:
     """Worker: one dynamic run; never raises (errors are reported in the point)."""
-    point, bearing, lubricant, drag, law, cage = args
+    point, setup = args
     start = _time.perf_counter()
     try:
         from ..simulation.runner import SolverSettings, simulate
@@ -98,9 +99,7 @@ def _run_point(args) -> dict:
         # (each run from scratch: at most twice the cost of the final one)
         length = point.time if point.time is not None else FIRST_TIME
         while True:
-            s = simulate(bearing, lubricant, axial_force=point.axial, radial_force=point.radial, rpm=point.rpm,
-                         time=length,
-                         ball_drag=drag, contact_law=law, cage=cage,
+            s = simulate(setup, axial_force=point.axial, radial_force=point.radial, rpm=point.rpm, time=length,
                          settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
             if point.time is not None or s.settled or length >= MAX_TIME:
                 break
@@ -131,6 +130,8 @@ class SkidMap:
     files: list = field(default_factory=list)
     #: what produced the map (:func:`exudyn_bearing.results.records.inputs_record`), set by :func:`skid_map`
     inputs: dict | None = None
+    #: the :class:`~exudyn_bearing.setup.BearingSetup` of every point (None: ``bearing`` with the defaults)
+    setup: BearingSetup | None = None
 
     def thresholds(self, level: float = 1.0) -> list[dict]:
         """Per (rpm, radial): the smallest axial load with kinematic cage slip below
@@ -158,10 +159,10 @@ class SkidMap:
                             gyroscopic_minimum_axial=gyroscopic_minimum_axial(self.bearing, rpm)))
         return out
 
-    def refine_thresholds(self, lubricant: Lubricant = REFERENCE_LUBRICANT, ball_drag: BallDrag | None = REFERENCE_DRAG,
-                          contact_law: ContactLaw = ContactLaw(), level: float = 1.0,
+    def refine_thresholds(self, lubricant: Lubricant = FROM_SETUP, ball_drag: BallDrag | None = FROM_SETUP,
+                          contact_law: ContactLaw = FROM_SETUP, level: float = 1.0,
                           tolerance: float = 0.04, confirm_time: float | None = 0.1,
-                          cage: CageModel = CageModel()) -> list[dict]:
+                          cage: CageModel = FROM_SETUP) -> list[dict]:
         """:meth:`thresholds`, refined where the steady-state solver applies (radial 0):
         the load at which the steady kinematic cage slip crosses ``level`` %, bisected
         between the bracketing grid loads until the bracket is ``tolerance`` of its load
@@ -169,7 +170,14 @@ class SkidMap:
         ``bracket`` (N) and, with ``confirm_time`` (s), dynamic runs of that length at both
         ends of the bracket (``dynamic_slips``), the dynamic model's own crossing through
         them (``dynamic_minimum_axial``) and whether it lies within the bracket's width of
-        the steady one (``dynamic_confirms``)."""
+        the steady one (``dynamic_confirms``). The parts not passed are the map's
+        :attr:`setup`'s; a setup with defects or waviness has no steady state, and its
+        thresholds stay the grid's (noted)."""
+        setup = as_setup(self.setup or self.bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
+                         cage=cage)
+        if setup.surface.active:
+            return [dict(entry, note=entry["note"] + "; not refined: a defect or waviness has no steady state")
+                    for entry in self.thresholds(level)]
         out = []
         for entry in self.thresholds(level):
             pts = sorted((p for p in self.points if p.rpm == entry["rpm"] and p.radial == entry["radial"]
@@ -183,8 +191,7 @@ class SkidMap:
             curve = []  # (axial N, steady kinematic slip %) of every converged evaluation
 
             def slip(axial):
-                state = steady_state(self.bearing, lubricant, axial_force=axial, rpm=entry["rpm"], ball_drag=ball_drag,
-                                     contact_law=contact_law, cage=cage)
+                state = steady_state(setup, axial_force=axial, rpm=entry["rpm"])
                 if not state.converged:
                     return None
                 curve.append([axial, state.kinematic_cage_slip_percent])
@@ -207,9 +214,8 @@ class SkidMap:
             if confirm_time:
                 from ..simulation.runner import simulate
 
-                dyn = [simulate(self.bearing, lubricant, axial_force=a, rpm=entry["rpm"], time=confirm_time,
-                                ball_drag=ball_drag,
-                                contact_law=contact_law, cage=cage).kinematic_cage_slip_percent for a in (lo, hi)]
+                dyn = [simulate(setup, axial_force=a, rpm=entry["rpm"], time=confirm_time).kinematic_cage_slip_percent
+                       for a in (lo, hi)]
                 # the dynamic model integrates the fast traction rule (within ~1e-2 of the
                 # accurate one the steady solver uses): its own crossing, interpolated (or
                 # extrapolated) through the two runs, must lie within the bracket's width
@@ -366,11 +372,11 @@ def _load_done(path: Path) -> dict:
     return done
 
 
-def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law, cage=None) -> None:
+def _check_inputs(folder: Path, setup: BearingSetup) -> None:
     """Record the map's inputs in ``folder/inputs.json``; a resume into a folder whose
     points came from other inputs is refused (it would serve results of another bearing,
-    oil or law)."""
-    record = inputs_record(bearing, lubricant=lubricant, drag=drag, contact_law=contact_law, cage=cage or CageModel())
+    oil, law, surface or housing)."""
+    record = setup_inputs(setup)
     path = folder / "inputs.json"
     if path.exists():
         try:
@@ -378,7 +384,7 @@ def _check_inputs(folder: Path, bearing, lubricant, drag, contact_law, cage=None
         except json.JSONDecodeError:
             old = None
         if old != record:
-            changed = sorted(k for k in record if old is None or old.get(k) != record[k])
+            changed = sorted(k for k in set(record) | set(old or {}) if old is None or old.get(k) != record.get(k))
             raise ValueError(f"out: {folder} holds a skid map computed from other inputs ({', '.join(changed)} "
                              "differ); use another --out folder or delete it")
     elif (folder / "points.jsonl").exists():
@@ -397,11 +403,11 @@ def _one_thread_per_worker():
 
 
 @accepts_old_names
-def skid_map(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant: Lubricant = FILE_LUBRICANT, *,
+def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubricant: Lubricant = FROM_SETUP, *,
              axial_force=DEFAULT_AXIAL, radial_force=(0.0,), rpm=DEFAULT_RPM, time: float | None = DEFAULT_TIME,
-             ball_drag: BallDrag | None = FILE_DRAG, out=None, workers: int | None = None, client=None,
-             progress=print, contact_law: ContactLaw = FILE_LAW, refine: bool = True,
-             cage: CageModel = FILE_CAGE) -> SkidMap:
+             ball_drag: BallDrag | None = FROM_SETUP, out=None, workers: int | None = None, client=None,
+             progress=print, contact_law: ContactLaw = FROM_SETUP, refine: bool = True,
+             cage: CageModel = FROM_SETUP) -> SkidMap:
     """Run the dynamic model over the grid axial x radial x rpm (N, N, rev/min) and return a
     :class:`SkidMap`. Each point runs ``time`` s, or with ``time=None`` (default) until it
     settles (:meth:`BearingResults.settled`): 0.1 s, then 0.2, 0.4, ... s from the start,
@@ -430,8 +436,7 @@ def skid_map(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
     cage : CageModel
         The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
-    bearing, (lubricant, ball_drag, contact_law, cage) = file_inputs(bearing, lubricant=lubricant, ball_drag=ball_drag,
-                                                                     contact_law=contact_law, cage=cage)
+    setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage)
     checks = (("axial_force", axial_force, 0.0), ("radial_force", radial_force, 0.0), ("rpm", rpm, None))
     for name, values, low in checks:
         bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
@@ -452,16 +457,15 @@ def skid_map(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
     done = {}
     if journal is not None:
         journal.parent.mkdir(parents=True, exist_ok=True)
-        _check_inputs(journal.parent, bearing, lubricant, ball_drag, contact_law, cage)
+        _check_inputs(journal.parent, setup)
         done = _load_done(journal)
     todo = [p for p in grid if p.key not in done]
-    result = SkidMap(bearing, [done[p.key] for p in grid if p.key in done],
-                     inputs=inputs_record(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
-                                          cage=cage))
+    result = SkidMap(setup.bearing, [done[p.key] for p in grid if p.key in done], inputs=setup_inputs(setup),
+                     setup=setup)
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()
-    jobs = [(p, bearing, lubricant, ball_drag, contact_law, cage) for p in todo]
+    jobs = [(p, setup) for p in todo]
 
     def record(data):
         point = SkidPoint(**data)
@@ -500,7 +504,7 @@ def skid_map(bearing: Bearing | BearingFile | str = REFERENCE_BEARING, lubricant
     order = {p.key: i for i, p in enumerate(grid)}
     result.points.sort(key=lambda p: order[p.key])
     if refine:
-        result.refined = result.refine_thresholds(lubricant, ball_drag, contact_law, cage=cage)
+        result.refined = result.refine_thresholds()
         if progress:
             for t in result.refined:
                 if "bracket" in t:

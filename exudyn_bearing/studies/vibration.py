@@ -16,7 +16,7 @@ import numpy as np
 
 from contact.geometry import contact_path_radius
 from ..bearing import Bearing
-from ..bearingfile import FILE_CAGE, FILE_DRAG, FILE_LAW, FILE_LUBRICANT, FILE_SURFACE
+from ..setup import FROM_SETUP
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
            "sampled_signal", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
@@ -291,11 +291,12 @@ class VibrationResult:
 
 
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
-              sample_rate: float = 20000.0, housing=None, band: tuple | None = None, settle: float = 0.02,
-              surface=FILE_SURFACE, settings=None, error_estimate: bool = False, lubricant=FILE_LUBRICANT,
-              contact_law=FILE_LAW, cage=FILE_CAGE, ball_drag=FILE_DRAG) -> VibrationResult:
+              sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | None = None, settle: float = 0.02,
+              surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
+              contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
-    ``radial_force`` N; outer race on ``housing``, default ``races.Housing()``) for ``time`` s and
+    ``radial_force`` N; outer race on ``housing``, a ``races.HousingModel`` or ``races.Housing(...)``,
+    default the setup's, else ``HousingModel()``) for ``time`` s and
     analyse the housing acceleration recorded at ``sample_rate`` Hz as a data-acquisition
     system records it (sensors written at every step, :func:`sampled_signal`; MODEL.md §13b;
     the time step is at most its period, puts two steps into each defect passage and resolves
@@ -303,16 +304,17 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     defect or it strikes the edge hard, a whole number per sample; §13c):
     spectrum, envelope spectrum in ``band`` (default: ±40 % about
     the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
-    passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing, BearingFile or path; ``surface`` overrides
-    the file's (so do ``lubricant``, ``contact_law``, ``cage``, ``ball_drag``). With
+    passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing,
+    BearingSetup or path; ``surface`` overrides the setup's (so do ``lubricant``,
+    ``contact_law``, ``cage``, ``ball_drag`` and ``housing``). With
     ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
     differences of the strongest envelope line (frequency, amplitude) and of the slip, and twice
     the amplitude's: its error bound where the amplitude converges at order >= 1."""
     import exudyn as exu
 
-    from ..bearingfile import file_inputs
+    from ..bearingfile import as_setup
     from ..model.builder import CreateAngularContactBearing
-    from ..races import Driven, Housing
+    from ..races import Driven, HousingModel
     from ..model.steprule import reach_share, strike_number
     from ..simulation.runner import SolverSettings, run_solver
 
@@ -322,18 +324,22 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
         raise ValueError(f"rpm must be positive, got {rpm!r}")
     if not (axial_force or radial_force):
         raise ValueError("no load: give axial_force and/or radial_force, N")
-    if housing is not None and getattr(housing, "kind", None) != "housing":
-        raise ValueError(f"housing must be a races.Housing(...), got {housing!r}")
+    if housing is not FROM_SETUP and housing is not None and not isinstance(housing, HousingModel) \
+            and getattr(housing, "kind", None) != "housing":
+        raise ValueError(f"housing must be a races.HousingModel(...) or races.Housing(...), got {housing!r}")
     if not (math.isfinite(time) and time > settle >= 0):
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
-    housing = housing or Housing()
-    bearing, (lubricant, law, cage, drag, surface) = file_inputs(
-        bearing, lubricant=lubricant, contactLaw=contact_law, cage=cage, ballDrag=ball_drag, surface=surface)
+    setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag,
+                     surface=surface)
+    bearing, surface = setup.bearing, setup.surface
+    if isinstance(housing, HousingModel):
+        housing = housing.race()
+    elif housing is FROM_SETUP or housing is None:
+        housing = (setup.housing or HousingModel()).race()
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
-    handle = CreateAngularContactBearing(mbs, bearing, lubricant, innerRace=Driven(rpm), outerRace=housing,
-                                         axialForce=axial_force, radialForce=radial_force, contactLaw=law, cage=cage,
-                                         ballDrag=drag, surface=surface, show=False)
+    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=housing,
+                                         axialForce=axial_force, radialForce=radial_force, show=False)
     sensors = handle.AddVibrationSensors(mbs)
     mbs.Assemble()
     period = 1.0 / sample_rate
@@ -387,10 +393,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "reach_share": share,
                            "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
-        finer = vibration(bearing, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
-                          sample_rate=sample_rate, housing=housing, band=band, settle=settle, surface=surface,
-                          settings=replace(settings, step=0.5 * step), lubricant=lubricant, contact_law=law,
-                          cage=cage, ball_drag=drag)
+        finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
+                          sample_rate=sample_rate, housing=housing, band=band, settle=settle,
+                          settings=replace(settings, step=0.5 * step))
         (f0, a0), (f1, a1) = out.envelope_peaks[0], finer.envelope_peaks[0]
         out.error_estimate = {"method": "rerun at half the step", "reference_step_s": 0.5 * step,
                               "reference_wall_time_s": finer.wall_time_s,
