@@ -33,9 +33,13 @@ class Reached(Exception):
 
 def _stop_at_builder(monkeypatch, module):
     """Replace ``module``'s CreateAngularContactBearing with one that raises :class:`Reached`
-    carrying the setup and outer race it was given (no model is built)."""
+    carrying the setup it was given and the outer race the builder makes of it (no model is
+    built)."""
+    from exudyn_bearing.model.builder import _check_races
+
     def builder(mbs, bearing, *a, **kw):
-        raise Reached(as_setup(bearing), kw.get("outerRace"))
+        setup = as_setup(bearing)
+        raise Reached(setup, _check_races(None, kw.get("innerRace"), kw.get("outerRace"), setup)[1])
 
     monkeypatch.setattr(module, "CreateAngularContactBearing", builder)
 

@@ -402,6 +402,15 @@ class SimulationSummary:
         return d | {"units": units_of(d), "inputs": self.inputs}
 
 
+def with_surface_step(settings: SolverSettings, handle, rpm: float) -> SolverSettings:
+    """``settings`` with a step that also resolves the bearing's defect passages at an inner
+    race turning at ``rpm`` (``handle.RecommendedSurfaceStep``, MODEL.md §13c), where the
+    bearing has defects and ``settings`` leaves the step to the bearing (``step`` None)."""
+    if settings.step is not None or handle.connector.surface is None or not handle.connector.surface.defects:
+        return settings
+    return replace(settings, step=min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)))
+
+
 @accepts_old_names
 def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubricant=FROM_SETUP, *,
              axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
@@ -425,7 +434,7 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     import exudyn as exu
 
     from ..model.builder import CreateAngularContactBearing
-    from ..races import Driven, Fixed
+    from ..races import Driven
 
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage,
                      surface=surface)
@@ -433,14 +442,11 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
         raise ValueError(f"time must be positive, got {time!r}")
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
-    outer = setup.housing.race() if setup.housing is not None else Fixed()
-    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=outer,
-                                         axialForce=axial_force, radialForce=radial_force,
-                                         initialState=initial_state, show=False)
+    # (outer race: the builder's default, the setup's housing or a fixed race)
+    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), axialForce=axial_force,
+                                         radialForce=radial_force, initialState=initial_state, show=False)
     mbs.Assemble()
-    if settings.step is None and setup.surface.defects:  # the defect passages set the step too (MODEL.md §13c)
-        settings = replace(settings, step=min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)))
-    info = run_solver(mbs, [handle], time, settings)
+    info = run_solver(mbs, [handle], time, with_surface_step(settings, handle, rpm))
     results = handle.Results(mbs)
     summary = results.summary()
     estimate = None

@@ -4,16 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from dataclasses import replace
-
 from ..bearingfile import as_setup
 from ..model.builder import CreateAngularContactBearing
 from ..presets import REFERENCE_BEARING
-from ..races import Driven, Fixed, node_rows
+from ..races import Driven, node_rows
 from ..renamed import accepts_old_names
 from ..results.graphics import AddBearingGraphics, render_frames, write_animation
 from ..setup import FROM_SETUP
-from ..simulation.runner import SolverSettings, run_solver
+from ..simulation.runner import SolverSettings, run_solver, with_surface_step
 
 __all__ = ["render_run"]
 
@@ -37,15 +35,12 @@ def render_run(out_dir, *, axial_force=1300.0, radial_force=0.0, rpm=1800.0, tim
     SC = exu.SystemContainer()
     mbs = SC.AddSystem()
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag)
-    outer = setup.housing.race() if setup.housing is not None else Fixed()
-    h = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=outer, axialForce=axial_force,
+    # (outer race: the builder's default, the setup's housing or a fixed race)
+    h = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), axialForce=axial_force,
                                     radialForce=radial_force)
     AddBearingGraphics(mbs, h)
     mbs.Assemble()
-    settings = SolverSettings()
-    if setup.surface.defects:  # the defect passages set the step too (MODEL.md §13c)
-        settings = replace(settings, step=min(h.RecommendedStep(), h.RecommendedSurfaceStep(rpm)))
-    run_solver(mbs, [h], time, settings)
+    run_solver(mbs, [h], time, with_surface_step(SolverSettings(), h, rpm))
     t, q, q_t = h.States(mbs)
     idx = node_rows(mbs, h.nodeNumbers)
     n_sys = len(mbs.systemData.GetODE2Coordinates())
