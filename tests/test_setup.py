@@ -128,6 +128,7 @@ def test_a_scene_from_the_file_gets_every_part(path, faulty):
     assert h.RecommendedSurfaceStep(1797.0) < 1.0  # (a perfect bearing's is inf)
 
 
+@pytest.mark.slow  # (two 4-ms runs, ~5 s; the fast lane's CLI test below also runs the file's defect)
 def test_simulate_runs_the_files_defect_and_housing(faulty):
     """The bug of issue 48: ``simulate("faulty.toml")`` ran a perfect bearing. Now the defect
     and the housing reach the run: the ball leaving the notch (28 µm deep, far deeper than the
