@@ -14,7 +14,7 @@ import numpy as np
 from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
-from .terms import contact_terms, surface_terms, term_record
+from .terms import TermRecord, contact_terms, surface_terms, term_record
 from .ball_surface import ball_heights
 
 __all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS", "CROOK_MODELS"]
@@ -213,13 +213,15 @@ class ContactForces:
 
 
 def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lubricant,
-                     law: ContactLaw = ContactLaw()) -> ContactForces:
+                     law: ContactLaw = ContactLaw(), terms: TermRecord | None = None) -> ContactForces:
     """Forces of n ball–race contacts from their kinematics (MODEL.md §3, §5, §6).
 
     Normal: Q = K delta^(3/2) + c d(delta)/dt, c = 2 zeta sqrt(1.5 K delta^(1/2) m),
     clipped at 0 (a contact cannot pull). Traction on the loaded contacts from the
     law's model (Crook, by default with the smooth limiting shear of MODEL.md §6a) with the
-    Hamrock–Dowson central film (at least ``min_film_thickness``).
+    Hamrock–Dowson central film (at least ``min_film_thickness``). ``terms``: the per-contact
+    terms (:func:`contact.terms.term_record` of ``law`` and ``lubricant``, built once by the
+    caller's :func:`exudyn_bearing.contact_records.contact_records`; built here if None).
     """
     n_con = kin.penetration.shape[0]
     r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
@@ -261,7 +263,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
                                           params.effective_modulus, lubricant)
         # the per-contact terms (contact.terms): thermal film factor, rolling resistance
-        terms = term_record(law, lubricant, params.ball_diameter)
+        if terms is None:
+            terms = term_record(law, lubricant, params.ball_diameter)
         phi_t, push, couple = 1.0, 0.0, 0.0
         if terms.per_contact:
             r_y = geometry.curvature_radii(params.ball_diameter, params.pitch_diameter, kin.contact_angle,

@@ -73,6 +73,12 @@ class Lubricant:
         _check_positive("limiting_shear_coefficient", self.limiting_shear_coefficient, allow_zero=True)
         _check_positive("film_shear_modulus_coefficient", self.film_shear_modulus_coefficient)
 
+    @property
+    def shear_heating(self) -> float:
+        """c_etaT / K_c, m/W: how much the film's shear heating thins the oil, the Crook
+        law's thermal parameter (MODEL.md §6, over 8) and the thermal film factor's (§11e)."""
+        return float(self.temperature_viscosity / self.thermal_conductivity)
+
     def viscosity_at(self, pressure, temperature=None):
         """Barus viscosity eta = eta_0 exp(c_etaP p - c_etaT (T - T_R)), Pa s (P11).
 

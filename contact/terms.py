@@ -42,11 +42,17 @@ THERMAL_FLOOR = 0.05
 
 
 class TermRecord(NamedTuple):
-    """Parameters of the per-contact terms; a term whose parameter is 0 is off."""
+    """Parameters of the per-contact terms; a term whose parameter is 0 is off.
 
-    heating: float  #: c_ηT / K_c of the thermal film factor (MODEL.md §11e), m/W
-    rolling_width: float  #: truncation width 𝓛 of the rolling resistance (MODEL.md §11b, the ball diameter), m
-    surface: SurfaceRecord = NO_SURFACE  #: defects, waviness, ball sizes (MODEL.md §13); empty arrays: off
+    The one record field (``surface``) comes first, the scalar parameters after it: so the
+    record crosses into compiled code as a plain tuple and back without naming its fields
+    (:func:`plain_terms`, :func:`terms_from_plain`), and a new term is one more field here
+    (with its default) and its value in :func:`term_record`.
+    """
+
+    surface: SurfaceRecord  #: defects, waviness, ball sizes (MODEL.md §13); empty arrays: off
+    heating: float = 0.0  #: c_ηT / K_c of the thermal film factor (MODEL.md §11e), m/W
+    rolling_width: float = 0.0  #: truncation width 𝓛 of the rolling resistance (MODEL.md §11b, the ball diameter), m
 
     @property
     def per_contact(self) -> bool:
@@ -77,21 +83,21 @@ def term_record(law, lubricant, ball_diameter, surface: SurfaceRecord = NO_SURFA
     and a ball of ``ball_diameter`` (m): the terms the law switches on (Crook laws only), and
     the bearing's ``surface`` (:func:`contact.surface.surface_record`)."""
     crook = law.crook
-    heating = float(lubricant.temperature_viscosity / lubricant.thermal_conductivity)
-    return TermRecord(heating if (crook and law.thermal_film) else 0.0,
-                      float(ball_diameter) if (crook and law.rolling_resistance) else 0.0, surface)
+    heating = lubricant.shear_heating
+    return TermRecord(surface, heating=heating if (crook and law.thermal_film) else 0.0,
+                      rolling_width=float(ball_diameter) if (crook and law.rolling_resistance) else 0.0)
 
 
 def plain_terms(terms: TermRecord) -> tuple:
     """``terms`` as nested plain tuples (numba types those in its C fast path); the kernel
     rebuilds it with :func:`terms_from_plain`."""
-    return (terms.heating, terms.rolling_width, tuple(terms.surface))
+    return (tuple(terms.surface), *terms[1:])
 
 
 @njit(cache=True, error_model="numpy")
 def terms_from_plain(plain):
     """The :class:`TermRecord` of :func:`plain_terms`' tuple (inside a kernel)."""
-    return TermRecord(plain[0], plain[1], SurfaceRecord(*plain[2]))
+    return TermRecord(SurfaceRecord(*plain[0]), *plain[1:])
 
 
 @njit(cache=True, error_model="numpy")

@@ -6,20 +6,20 @@ kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), Hertz fits (§3,
 Hamrock–Dowson film (§5, P17), the Crook traction by the fast rule
 (:func:`contact.kernels.crook.crook_one`) and the per-contact terms of :mod:`contact.terms`;
 force and moment on the ball as :func:`contact.ballrace.ball_race_forces`.
-:func:`race_contacts_parallel` spreads the contacts over numba's threads.
+:func:`race_contacts_parallel` spreads the contacts over threads (the kernel runs without the GIL).
 """
 from __future__ import annotations
 
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from numba import njit, prange
+from numba import get_num_threads, njit
 
-from ..surface import SurfaceRecord
-from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
+from ..terms import ContactState, ball_surface_height, contact_loads, film_factor, surface_height
 from .crook import crook_one
 
-__all__ = ["race_contacts", "race_contacts_parallel", "rotation_matrices"]
+__all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
 
 
 @njit(cache=True, error_model="numpy")
@@ -229,16 +229,37 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
         _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", nogil=True)
+def race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo):
+    """:func:`race_contacts` for the flat contact indices ``todo`` only (state idx // 2Z, race
+    idx // Z % 2, ball idx % Z; int64), without the GIL: the rest of the outputs is left as it
+    is (a Jacobian's race columns change one race's contacts only)."""
+    for n in range(todo.shape[0]):
+        _race_contact(todo[n], balls, frames, geometry, law, tables, terms, out)
+
+
+_POOL = []  # the worker threads of race_contacts_parallel, started on first use
+
+
 def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, todo):
-    """:func:`race_contacts` with the contacts spread over numba's threads, for the flat
-    contact indices ``todo`` only (state idx // 2Z, race idx // Z % 2, ball idx % Z; int64):
-    the rest of the outputs is left as it is (a Jacobian's race columns change one race's
-    contacts only)."""
-    # numba's parallel loop passes records of arrays field by field, not nested ones: the terms'
-    # surface record travels as its arrays and is rebuilt per contact (no copy)
-    heating, width = terms.heating, terms.rolling_width
-    waves, defects, excess, nominal, pits, ball_waves = terms.surface
-    for n in prange(todo.shape[0]):
-        one = TermRecord(heating, width, SurfaceRecord(waves, defects, excess, nominal, pits, ball_waves))
-        _race_contact(todo[n], balls, frames, geometry, law, tables, one, out)
+    """:func:`race_contacts_at` with the contacts ``todo`` split over numba's thread count
+    (``numba.get_num_threads()``), one share on the calling thread.
+
+    The records pass unchanged to every share: numba's ``prange`` cannot take a record that
+    holds a record of arrays (the terms' surface), so a parallel loop would have to rebuild
+    the terms field by field — and a forgotten field would silently take its default there.
+    """
+    threads = get_num_threads()
+    if threads < 2 or todo.shape[0] < 2 * threads:
+        race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo)
+        return
+    if not _POOL or _POOL[0][0] < threads - 1:
+        if _POOL:
+            _POOL.pop()[1].shutdown(wait=False)
+        _POOL.append((threads - 1, ThreadPoolExecutor(threads - 1, thread_name_prefix="race-contacts")))
+    shares = np.array_split(todo, threads)
+    pending = [_POOL[0][1].submit(race_contacts_at, balls, frames, geometry, law, tables, terms, out, share)
+               for share in shares[1:]]
+    race_contacts_at(balls, frames, geometry, law, tables, terms, out, shares[0])
+    for job in pending:
+        job.result()

@@ -111,7 +111,7 @@ def traction_record(lubricant, limiting_shear=None, film_modulus=None) -> LawRec
     """A :class:`LawRecord` for the traction alone (:func:`contact.kernels.crook.crook_one`):
     ``lubricant`` with Λ and κ (None: none)."""
     return LawRecord(1, True, 0.0, 0.0, float(lubricant.viscosity), float(lubricant.pressure_viscosity), 0.0,
-                     float(lubricant.temperature_viscosity / (8.0 * lubricant.thermal_conductivity)),
+                     lubricant.shear_heating / 8.0,
                      float(limiting_shear or 0.0), float(film_modulus or 0.0))
 
 

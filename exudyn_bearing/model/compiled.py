@@ -317,10 +317,6 @@ class CompiledForces:
         for k, name in enumerate(("inner", "outer")):
             if name in con.race_frames:
                 self.local_pos[k], self.local_rot[k] = con.race_frames[name]
-        geometry = kernels.RaceGeometry(np.array([con.grooves["inner"], con.grooves["outer"]], dtype=float),
-                                        np.array([b.inner_conformity, b.outer_conformity]), np.array([-1.0, 1.0]),
-                                        float(b.ball_radius), float(b.pitch_diameter), float(b.effective_modulus),
-                                        float(b.ball_mass))
         cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
         self.cage_kind = cage_kind
         self.cage_slot = con.layout["cage"] if cage_kind == 1 else -1
@@ -337,8 +333,9 @@ class CompiledForces:
         guide = Guide(-1, 0.0, 0.0, 0.0, 0.0)
         if con.guide is not None:
             guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
-        self.physics = Physics(geometry, kernels.law_record(law, lub), kernels.crook_tables(law.quadrature_order),
-                               con.terms, cage, pocket, guide)
+        records = con.records
+        self.physics = Physics(records.geometry, records.law, kernels.crook_tables(law.quadrature_order),
+                               records.terms, cage, pocket, guide)
         held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
             held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
@@ -441,9 +438,8 @@ class CompiledForces:
         ph = self.physics
         args = (balls, frames, ph.geometry, ph.law, ph.tables, ph.terms,
                 kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
-        # contacts spread over numba's threads from the main thread; a threaded caller (a
-        # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
-        # OpenMP is missing, serves one caller at a time)
+        # contacts shared out over threads from the main thread; a threaded caller (a Dask
+        # worker thread, whose process already runs a job per core) runs them serially
         if bsz == 1 or threading.current_thread() is not threading.main_thread():
             kernels.race_contacts(*args)
             return w

@@ -12,11 +12,11 @@ from dataclasses import replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import RaceContact, ball_race_forces, with_surface
+from contact.ballrace import ball_race_forces, with_surface
 from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
 from contact.surface import surface_record
-from contact.terms import term_record
 from ..cage import CageModel
+from ..contact_records import contact_records
 from ..jacobian import block_jacobian
 from ..races import Race
 from .diagnostics import ConnectorDiagnostics
@@ -72,8 +72,10 @@ class BearingConnector(ConnectorDiagnostics):
         self.surface = setup.surface if setup.surface.active else None
         #: what the builder's surface start did (:class:`exudyn_bearing.solvers.surface_start.SurfaceStart`)
         self.surface_start = None
-        self.terms = term_record(law, lubricant, bearing.ball_diameter,
-                                 surface_record(self.surface, bearing, ball_circles))
+        #: the contacts' records, both force paths (:func:`exudyn_bearing.contact_records.contact_records`)
+        self.records = contact_records(bearing, lubricant, law, surface=surface_record(self.surface, bearing,
+                                                                                      ball_circles))
+        self.terms = self.records.terms
         self.races, self.layout = races, layout
         self.origin = np.asarray(frame_origin, dtype=float)
         self.rotation = np.asarray(frame_rotation, dtype=float)
@@ -89,17 +91,8 @@ class BearingConnector(ConnectorDiagnostics):
         self.z = bearing.balls
         self.n_nodes = 1 + max(s for s in [*layout["balls"], layout["cage"], layout["inner"], layout["outer"]]
                                if s is not None)
-        (ri, zi), (ro, zo) = bearing.groove_centres()
-        d = bearing.ball_diameter
-        self.grooves = {"inner": (ri, zi, (bearing.inner_conformity - 0.5) * d),
-                        "outer": (ro, zo, (bearing.outer_conformity - 0.5) * d)}
         # inner contacts first, then outer: one vectorized evaluation for all 2 Z contacts
-        z = bearing.balls
-        self.groove_all = tuple(np.repeat([self.grooves["inner"][k], self.grooves["outer"][k]], z) for k in range(3))
-        self.signs = np.repeat([-1.0, 1.0], z)
-        self.params = RaceContact(d, bearing.pitch_diameter,
-                                  np.repeat([bearing.inner_conformity, bearing.outer_conformity], z),
-                                  self.signs, bearing.effective_modulus, bearing.ball_mass)
+        self.groove_all, self.signs, self.params = self.records.grooves, self.records.signs, self.records.races
         self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
         self.cage_damping = cage.damping_for(bearing.ball_mass)
         # (race, radial play m, stiffness N/m, damping N s/m, friction constant N m s) of a
@@ -439,7 +432,7 @@ class BearingConnector(ConnectorDiagnostics):
                             race_omega=stacked(frames, 3, (3,), bsz, z))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
                                    self.bearing.ball_diameter, self.bearing.pitch_diameter, **pits)
-        frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law)
+        frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law, self.terms)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)
         for k, name in enumerate(("inner", "outer")):

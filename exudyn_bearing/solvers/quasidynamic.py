@@ -39,7 +39,8 @@ from ..renamed import accepts_old_names
 from ..setup import FROM_SETUP, refuse_surface
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
-from .steady import contact_constants, steady_state
+from ..contact_records import contact_records
+from .steady import steady_state
 
 __all__ = ["AzimuthStates", "combined_load_state", "pose_state", "seed_axial_load"]
 
@@ -80,7 +81,8 @@ class _Balance:
         self.e_r = np.stack([np.cos(self.psi), np.sin(self.psi), np.zeros(z)], axis=1)
         self.e_p = np.stack([-np.sin(self.psi), np.cos(self.psi), np.zeros(z)], axis=1)
         self.race_omega = np.concatenate([np.tile(w_i * _E_Z, (z, 1)), np.tile(w_o * _E_Z, (z, 1))])
-        self.tube, self.grooves, self.signs, self.params = contact_constants(bearing, z)
+        records = contact_records(bearing, lubricant, law, balls=z)
+        self.tube, self.grooves, self.signs, self.params, self.terms = records[:5]
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
         self.inertia = bearing.ball_inertia
@@ -130,7 +132,7 @@ class _Balance:
         v = np.stack([-w_c * arm[:, 1], w_c * arm[:, 0], np.zeros(2 * z)], axis=1)
         kin = ball_race_kinematics(both, v, np.concatenate([w_b, w_b]), origin, np.eye(3), np.zeros(3),
                                    self.race_omega, self.grooves, self.b.ball_radius, self.signs)
-        f = ball_race_forces(kin, self.params, self.lub, self.law)
+        f = ball_race_forces(kin, self.params, self.lub, self.law, self.terms)
         force = f.force[:z] + f.force[z:]
         force[:, :2] += self.b.ball_mass * w_c ** 2 * arm[:z]  # -m a = m w_c^2 (c - e)
         force[:, 1] += pocket

@@ -25,12 +25,13 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from contact import cage as cage_physics
-from contact.ballrace import ContactLaw, RaceContact, ball_race_forces
+from contact.ballrace import ContactLaw, ball_race_forces
 from contact.kinematics import ball_race_kinematics, rolling_cage_speed
 from contact.lubricant import Lubricant
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import as_setup
 from ..cage import CageModel
+from ..contact_records import contact_records
 from ..setup import FROM_SETUP, BearingSetup, refuse_surface
 from ..presets import REFERENCE_BEARING
 from ..renamed import accepts_old_names
@@ -97,22 +98,6 @@ class _OutOfBudget(Exception):
 START_BUDGET = 1500
 
 
-def contact_constants(bearing, balls: int = 1):
-    """The ball–race contact constants of ``balls`` balls for one vectorized evaluation, inner
-    contacts of balls 0..n-1 first, then their outer ones: the groove tube radii
-    ((f_i - 0.5) D, (f_o - 0.5) D), the grooves (centre radius, centre z, tube radius) and
-    signs per contact (:func:`contact.kinematics.ball_race_kinematics`) and their
-    :class:`contact.ballrace.RaceContact` (MODEL.md §2–§3)."""
-    (r_gi, z_gi), (r_go, z_go) = bearing.groove_centres()
-    d = bearing.ball_diameter
-    tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
-    grooves = (np.repeat([r_gi, r_go], balls), np.repeat([z_gi, z_go], balls), np.repeat(tube, balls))
-    signs = np.repeat([-1.0, 1.0], balls)
-    params = RaceContact(d, bearing.pitch_diameter, np.repeat([bearing.inner_conformity, bearing.outer_conformity],
-                                                              balls), signs, bearing.effective_modulus, bearing.ball_mass)
-    return tube, grooves, signs, params
-
-
 class _OneBall:
     """The balance equations of one ball at azimuth 0 (x radial, y circumferential, z axial)."""
 
@@ -125,7 +110,8 @@ class _OneBall:
         self.calls, self.budget = 0, math.inf
         self.axial, self.w_i, self.w_o = axial, w_i, w_o
         # inner contact first, then outer: one vectorized evaluation of both
-        self.tube, self.grooves, self.signs, self.params = contact_constants(bearing)
+        records = contact_records(bearing, lubricant, law, balls=1)
+        self.tube, self.grooves, self.signs, self.params, self.terms = records[:5]
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
         self.inertia = bearing.ball_inertia
@@ -161,7 +147,7 @@ class _OneBall:
         w_r = np.array([self.w_i * _E_Z, self.w_o * _E_Z])
         kin = ball_race_kinematics(both, v, np.stack([w_b, w_b]), origin, np.eye(3), np.zeros(3), w_r,
                                    self.grooves, self.b.ball_radius, self.signs)
-        return kin, ball_race_forces(kin, self.params, self.lub, self.law)
+        return kin, ball_race_forces(kin, self.params, self.lub, self.law, self.terms)
 
     def _pocket(self, c, w_c, w_b):
         """(pocket force, pocket friction, contact point - ball centre) on the ball under the

@@ -1,0 +1,59 @@
+"""The one conversion from a bearing's setup to the records its ball–race contacts are
+computed with (MODEL.md §2–§6, §11, §13).
+
+Both force paths (the numpy functions of :mod:`contact` and the compiled kernels of
+:mod:`contact.kernels`), both Jacobian paths and the solvers read the records
+:func:`contact_records` builds, so no two of them can convert a bearing, a lubricant or a
+law differently: the groove geometry and the numpy path's :class:`~contact.ballrace.RaceContact`,
+the per-contact terms (:class:`~contact.terms.TermRecord`, with the surface), and the
+compiled path's :class:`~contact.kernels.records.RaceGeometry` and
+:class:`~contact.kernels.records.LawRecord`.
+"""
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from contact.ballrace import ContactLaw, RaceContact
+from contact.kernels.records import LawRecord, RaceGeometry, law_record
+from contact.surface import NO_SURFACE, SurfaceRecord
+from contact.terms import TermRecord, term_record
+
+__all__ = ["ContactRecords", "contact_records"]
+
+
+class ContactRecords(NamedTuple):
+    """A bearing's ball–race contacts as both force paths read them; contacts in the order of
+    one vectorized evaluation: the inner contacts of balls 0…n−1, then their outer ones."""
+
+    tube: tuple  #: groove tube radii ((f_i − ½) D, (f_o − ½) D), m
+    #: per contact (groove-centre radius m, groove-centre axial position m, tube radius m),
+    #: arrays (2n,) (:func:`contact.kinematics.ball_race_kinematics`)
+    grooves: tuple
+    signs: np.ndarray  #: (2n,): −1 inner, +1 outer
+    races: RaceContact  #: the numpy path's geometry and material per contact (MODEL.md §2–§3)
+    terms: TermRecord  #: the per-contact terms, both paths (:mod:`contact.terms`)
+    geometry: RaceGeometry  #: the compiled path's geometry and material of both races
+    law: LawRecord  #: the compiled path's law with its lubricant
+
+
+def contact_records(bearing, lubricant, law: ContactLaw, balls: int | None = None,
+                    surface: SurfaceRecord = NO_SURFACE) -> ContactRecords:
+    """The :class:`ContactRecords` of ``bearing`` (a :class:`exudyn_bearing.Bearing`) with
+    ``lubricant`` and ``law`` for ``balls`` balls (default: all of the bearing's) and a
+    surface record (:func:`contact.surface.surface_record`; none by default)."""
+    n = bearing.balls if balls is None else int(balls)
+    (r_gi, z_gi), (r_go, z_go) = bearing.groove_centres()
+    d = bearing.ball_diameter
+    tube = ((bearing.inner_conformity - 0.5) * d, (bearing.outer_conformity - 0.5) * d)
+    grooves = (np.repeat([r_gi, r_go], n), np.repeat([z_gi, z_go], n), np.repeat(tube, n))
+    signs = np.repeat([-1.0, 1.0], n)
+    conformity = np.array([bearing.inner_conformity, bearing.outer_conformity])
+    races = RaceContact(d, bearing.pitch_diameter, np.repeat(conformity, n), signs, bearing.effective_modulus,
+                        bearing.ball_mass)
+    geometry = RaceGeometry(np.array([(r_gi, z_gi, tube[0]), (r_go, z_go, tube[1])], dtype=float), conformity,
+                            np.array([-1.0, 1.0]), float(bearing.ball_radius), float(bearing.pitch_diameter),
+                            float(bearing.effective_modulus), float(bearing.ball_mass))
+    return ContactRecords(tube, grooves, signs, races, term_record(law, lubricant, d, surface), geometry,
+                          law_record(law, lubricant))
