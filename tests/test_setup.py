@@ -35,11 +35,11 @@ def _stop_at_builder(monkeypatch, module):
     """Replace ``module``'s CreateAngularContactBearing with one that raises :class:`Reached`
     carrying the setup it was given and the outer race the builder makes of it (no model is
     built)."""
-    from exudyn_bearing.model.builder import _check_races
+    from exudyn_bearing.model.checks import check_races
 
     def builder(mbs, bearing, *a, **kw):
         setup = as_setup(bearing)
-        raise Reached(setup, _check_races(None, kw.get("innerRace"), kw.get("outerRace"), setup)[1])
+        raise Reached(setup, check_races(None, kw.get("innerRace"), kw.get("outerRace"), setup)[1])
 
     monkeypatch.setattr(module, "CreateAngularContactBearing", builder)
 
