@@ -15,13 +15,13 @@ from . import film, geometry, hertz
 from .kinematics import ContactKinematics, cross
 from .lubricant import Lubricant
 from .terms import TermRecord, contact_terms, surface_terms, term_record
+from .traction_laws import TRACTION_LAWS, traction_model
 from .ball_surface import ball_heights
 
-__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS", "CROOK_MODELS"]
+__all__ = ["RaceContact", "ContactLaw", "ContactForces", "ball_race_forces", "with_surface", "TRACTION_MODELS"]
 
-TRACTION_MODELS = ("crook-limited", "crook", "newtonian", "coulomb", "none")
-#: the models evaluated by :func:`contact.traction.crook_traction`
-CROOK_MODELS = ("crook-limited", "crook")
+#: the traction laws' names (:data:`contact.traction_laws.TRACTION_LAWS`, at import)
+TRACTION_MODELS = tuple(TRACTION_LAWS)
 
 
 @dataclass(frozen=True)
@@ -142,8 +142,7 @@ class ContactLaw:
     thermal_film: bool = False
 
     def __post_init__(self) -> None:
-        if self.traction not in TRACTION_MODELS:
-            raise ValueError(f"traction must be one of {TRACTION_MODELS}, got {self.traction!r}")
+        traction_model(self.traction)  # a registered law, else a ValueError naming them
         if not (isinstance(self.quadrature_order, int) and self.quadrature_order >= 2):
             raise ValueError(f"quadrature_order must be an integer >= 2, got {self.quadrature_order!r}")
         if not (np.isfinite(self.damping_ratio) and self.damping_ratio >= 0):
@@ -166,13 +165,13 @@ class ContactLaw:
     @property
     def crook(self) -> bool:
         """Whether the traction is a Crook law (:func:`contact.traction.crook_traction`)."""
-        return self.traction in CROOK_MODELS
+        return traction_model(self.traction).crook
 
     def limiting_shear_for(self, lubricant) -> float | None:
         """Lambda of the smooth limiting shear this law applies with ``lubricant``
         (MODEL.md §6a), or None for no cap: ``limiting_shear`` if given (Crook laws), else the
         lubricant's ``limiting_shear_coefficient`` for 'crook-limited' (0 = none)."""
-        if self.traction not in CROOK_MODELS:
+        if not self.crook:
             return None
         if self.limiting_shear is not None:
             return float(self.limiting_shear)
@@ -185,7 +184,7 @@ class ContactLaw:
         """kappa = G/p of the film's elastic compliance this law applies with ``lubricant``
         (MODEL.md §6b), or None for none: with ``film_elasticity`` True, or None and
         'crook-limited', the lubricant's ``film_shear_modulus_coefficient``."""
-        if self.traction not in CROOK_MODELS:
+        if not self.crook:
             return None
         on = self.traction == "crook-limited" if self.film_elasticity is None else self.film_elasticity
         return float(lubricant.film_shear_modulus_coefficient) if on else None
@@ -244,55 +243,38 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     h = np.zeros(n_con)
     p_max = contact.max_pressure(load)
     loaded = load > 0
-    if law.traction == "coulomb" and np.any(loaded):
-        from .friction import coulomb_traction
-
-        idx = np.flatnonzero(loaded)
-        a, b = contact.semi_axes(load)
-        tr = coulomb_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a[idx], b[idx],
-                              load[idx], law.friction_coefficient, law.friction_regularization)
-        fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
-        if law.spin_moment:
-            mz[idx] = tr.mz
-    elif law.traction in CROOK_MODELS + ("newtonian",) and np.any(loaded):
-        from .traction import crook_traction, newtonian_traction
-
+    model = traction_model(law.traction)
+    if model.evaluate is not None and np.any(loaded):
         idx = np.flatnonzero(loaded)
         a, b = contact.semi_axes(load)
         a, b = a[idx], b[idx]
-        h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
-                                          params.effective_modulus, lubricant)
-        # the per-contact terms (contact.terms): thermal film factor, rolling resistance
-        if terms is None:
-            terms = term_record(law, lubricant, params.ball_diameter)
-        phi_t, push, couple = 1.0, 0.0, 0.0
-        if terms.per_contact:
-            r_y = geometry.curvature_radii(params.ball_diameter, params.pitch_diameter, kin.contact_angle,
-                                           params.conformity, params.race)[1]
-            rate = np.zeros(n_con) if kin.rolling_rate is None else kin.rolling_rate
-            phi_t, push, couple = contact_terms(
-                terms, load=load[idx], a=a, b=b, max_pressure=p_max[idx], film=h_c, r_x=r_x[idx],
-                r_y=np.broadcast_to(r_y, (n_con,))[idx], slip=kin.slip_rolling[idx],
-                entrainment=kin.entrainment[idx], rolling_rate=rate[idx], ball_radius=0.5 * params.ball_diameter,
-                e_prime=params.effective_modulus, viscosity=lubricant.viscosity)
-        h[idx] = np.maximum(phi_t * h_c, law.min_film_thickness)
-        if law.rolling_resistance:
-            rolling[idx], rolling_push[idx] = couple, push
-            # the couple's power and the force pair's at the contact point (u = race − ball)
-            rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx] + rolling_push[idx] * kin.slip_rolling[idx]
-        # spin still shapes the local slip field when its moment is switched off
         p_traction = p_max[idx]
-        if lubricant.pressure_viscosity > 0:
-            p_traction = np.minimum(p_traction, law.max_barus_exponent / lubricant.pressure_viscosity)
-        if law.traction == "newtonian":
-            tr = newtonian_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
-                                    h[idx], lubricant)
-        else:
-            tr = crook_traction(kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx], a, b, p_traction,
-                                h[idx], lubricant, order=law.quadrature_order,
-                                limiting_shear=law.limiting_shear_for(lubricant), fast=law.fast_quadrature,
-                                film_modulus=law.film_modulus_for(lubricant),
-                                entrainment=kin.entrainment[idx])
+        if model.film:
+            h_c = film.central_film_thickness(kin.entrainment[idx], load[idx], r_x[idx], contact.ellipticity[idx],
+                                              params.effective_modulus, lubricant)
+            # the per-contact terms (contact.terms): thermal film factor, rolling resistance
+            if terms is None:
+                terms = term_record(law, lubricant, params.ball_diameter)
+            phi_t, push, couple = 1.0, 0.0, 0.0
+            if terms.per_contact:
+                r_y = geometry.curvature_radii(params.ball_diameter, params.pitch_diameter, kin.contact_angle,
+                                               params.conformity, params.race)[1]
+                rate = np.zeros(n_con) if kin.rolling_rate is None else kin.rolling_rate
+                phi_t, push, couple = contact_terms(
+                    terms, load=load[idx], a=a, b=b, max_pressure=p_max[idx], film=h_c, r_x=r_x[idx],
+                    r_y=np.broadcast_to(r_y, (n_con,))[idx], slip=kin.slip_rolling[idx],
+                    entrainment=kin.entrainment[idx], rolling_rate=rate[idx], ball_radius=0.5 * params.ball_diameter,
+                    e_prime=params.effective_modulus, viscosity=lubricant.viscosity)
+            h[idx] = np.maximum(phi_t * h_c, law.min_film_thickness)
+            if law.rolling_resistance:
+                rolling[idx], rolling_push[idx] = couple, push
+                # the couple's power and the force pair's at the contact point (u = race − ball)
+                rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx] + rolling_push[idx] * kin.slip_rolling[idx]
+            if lubricant.pressure_viscosity > 0:
+                p_traction = np.minimum(p_traction, law.max_barus_exponent / lubricant.pressure_viscosity)
+        # spin still shapes the local slip field when its moment is switched off
+        tr = model.evaluate((kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx]), a, b, p_traction,
+                            load[idx], h[idx], kin.entrainment[idx], lubricant, law)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz

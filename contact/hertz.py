@@ -6,18 +6,24 @@ R_y > R_x, so a > b and the ellipticity k = a/b >= 1.
 
 The contact is described by its curvature sum 1/R = 1/R_x + 1/R_y, the radius ratio
 alpha_r = R_y / R_x and the effective modulus E' = 2 / ((1-nu1²)/E1 + (1-nu2²)/E2).
-Everything is vectorized: pass arrays of contacts.
+Everything is vectorized: pass arrays of contacts. The laws the compiled kernels share
+(:mod:`contact.kernels.race`) are written once, as scalar numba functions (``fit_*``,
+:func:`stiffness_of`, :func:`semi_axis_of`, :func:`max_pressure_of`) that the kernels call
+and the array functions here apply element by element through their ufuncs.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit, vectorize
 from scipy import optimize, special
 
 __all__ = [
     "effective_modulus", "brewe_hamrock", "exact_ellipticity", "HertzContact",
-    "hertz_contact", "effective_ball_stiffness",
+    "hertz_contact", "effective_ball_stiffness", "fit_ellipticity", "fit_first_integral", "fit_second_integral",
+    "stiffness_of", "semi_axis_of", "max_pressure_of",
 ]
 
 
@@ -37,6 +43,82 @@ def effective_modulus(youngs_1, poisson_1, youngs_2=None, poisson_2=None):
     return 2.0 / ((1 - np.square(poisson_1)) / youngs_1 + (1 - np.square(poisson_2)) / youngs_2)
 
 
+_F8 = "float64"
+
+
+@njit(cache=True, error_model="numpy")
+def fit_ellipticity(ratio):
+    """k = a/b of radius ratio alpha_r = R_y/R_x >= 1 by the Brewe–Hamrock fit (MODEL.md §3)."""
+    return 1.0339 * ratio ** 0.6360
+
+
+@njit(cache=True, error_model="numpy")
+def fit_first_integral(ratio):
+    """Elliptic integral of the first kind F by the Brewe–Hamrock fit (MODEL.md §3)."""
+    return 1.5277 + 0.6023 * math.log(ratio)
+
+
+@njit(cache=True, error_model="numpy")
+def fit_second_integral(ratio):
+    """Elliptic integral of the second kind E by the Brewe–Hamrock fit (MODEL.md §3)."""
+    return 1.0003 + 0.5968 / ratio
+
+
+@njit(cache=True, error_model="numpy")
+def stiffness_of(ellipticity, first, second, radius, e_prime):
+    """Hertz constant K of Q = K delta^(3/2), N/m^1.5 (P2), from k, F, E, the curvature
+    radius R (1/R = 1/R_x + 1/R_y, m) and E' (Pa)."""
+    return math.pi * ellipticity * e_prime * math.sqrt(second * radius / (4.5 * first ** 3))
+
+
+@njit(cache=True, error_model="numpy")
+def semi_axis_of(load, ellipticity, second, radius, e_prime, transverse):
+    """Hertz semi-axis under load Q (N, >= 0), m (MODEL.md §3): ``transverse`` a, else the
+    rolling b; a = (k² 6 E Q R / (pi E'))^(1/3), b = (6 E Q R / (pi E' k))^(1/3)."""
+    base = 6.0 * second * load * radius / (math.pi * e_prime)
+    if transverse:
+        return np.cbrt(ellipticity * ellipticity * base)
+    return np.cbrt(base / ellipticity)
+
+
+@njit(cache=True, error_model="numpy")
+def max_pressure_of(load, a, b):
+    """Peak pressure p_max = 3Q / (2 pi a b), Pa; 0 for an unloaded contact."""
+    if load > 0.0:
+        return 1.5 * load / (math.pi * a * b)
+    return 0.0
+
+
+@vectorize([f"{_F8}({_F8})"], cache=True)
+def _fit_ellipticity(ratio):
+    return fit_ellipticity(ratio)
+
+
+@vectorize([f"{_F8}({_F8})"], cache=True)
+def _fit_first_integral(ratio):
+    return fit_first_integral(ratio)
+
+
+@vectorize([f"{_F8}({_F8})"], cache=True)
+def _fit_second_integral(ratio):
+    return fit_second_integral(ratio)
+
+
+@vectorize([f"{_F8}({_F8}, {_F8}, {_F8}, {_F8}, {_F8})"], cache=True)
+def _stiffness(ellipticity, first, second, radius, e_prime):
+    return stiffness_of(ellipticity, first, second, radius, e_prime)
+
+
+@vectorize([f"{_F8}({_F8}, {_F8}, {_F8}, {_F8}, {_F8}, boolean)"], cache=True)
+def _semi_axis(load, ellipticity, second, radius, e_prime, transverse):
+    return semi_axis_of(load, ellipticity, second, radius, e_prime, transverse)
+
+
+@vectorize([f"{_F8}({_F8}, {_F8}, {_F8})"], cache=True)
+def _max_pressure(load, a, b):
+    return max_pressure_of(load, a, b)
+
+
 def brewe_hamrock(radius_ratio):
     """Ellipticity k and elliptic integrals F (first kind), E (second kind) by the
     Brewe–Hamrock (1977) fits (MODEL.md §3).
@@ -51,10 +133,7 @@ def brewe_hamrock(radius_ratio):
     k, first, second : ndarray
     """
     alpha_r = np.asarray(radius_ratio, dtype=float)
-    k = 1.0339 * alpha_r ** 0.6360
-    first = 1.5277 + 0.6023 * np.log(alpha_r)
-    second = 1.0003 + 0.5968 / alpha_r
-    return k, first, second
+    return _fit_ellipticity(alpha_r), _fit_first_integral(alpha_r), _fit_second_integral(alpha_r)
 
 
 def _complete_integrals(k):
@@ -129,18 +208,14 @@ class HertzContact:
 
     def semi_axes(self, load):
         """Semi-axes (a transverse, b rolling), m, for load Q (MODEL.md §3)."""
-        q_r = np.maximum(np.asarray(load, dtype=float), 0.0) * self.curvature_radius
-        base = 6.0 * self.second_integral * q_r / (np.pi * self.effective_modulus)
-        a = np.cbrt(np.square(self.ellipticity) * base)
-        b = np.cbrt(base / self.ellipticity)
-        return a, b
+        load = np.maximum(np.asarray(load, dtype=float), 0.0)
+        parts = (load, self.ellipticity, self.second_integral, self.curvature_radius, self.effective_modulus)
+        return _semi_axis(*parts, True), _semi_axis(*parts, False)
 
     def max_pressure(self, load):
         """Peak pressure p_max = 3Q / (2 pi a b), Pa; 0 for an unloaded contact."""
         load = np.maximum(np.asarray(load, dtype=float), 0.0)
-        a, b = self.semi_axes(load)
-        area = np.where(load > 0, a * b, 1.0)
-        return np.where(load > 0, 1.5 * load / (np.pi * area), 0.0)
+        return _max_pressure(load, *self.semi_axes(load))
 
 
 def hertz_contact(r_x, r_y, e_prime, method="fit"):
@@ -169,7 +244,7 @@ def hertz_contact(r_x, r_y, e_prime, method="fit"):
     else:
         raise ValueError(f"method must be 'fit' or 'exact', got {method!r}")
     radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
-    stiffness = np.pi * k * e_prime * np.sqrt(second * radius / (4.5 * first ** 3))
+    stiffness = _stiffness(k, first, second, radius, e_prime)
     return HertzContact(stiffness, k, first, second, radius, np.asarray(e_prime, dtype=float))
 
 

@@ -10,6 +10,8 @@ import math
 
 from numba import njit, vectorize
 
+from .hertz import fit_second_integral
+
 __all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment",
            "rolling_loads", "hydrodynamic_force"]
 
@@ -26,8 +28,7 @@ def hydrodynamic_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, wi
     if not (load > 0.0 and u > 0.0 and a > 0.0):
         return 0.0
     kap = min(b / a, 1.0)
-    rxy = min(r_x / r_y, 1.0)
-    beta = (4.0 / math.pi) * (1.0003 + 0.5968 * rxy) / (1.0 + r_x / r_y)
+    beta = (4.0 / math.pi) * fit_second_integral(max(r_y / r_x, 1.0)) / (1.0 + r_x / r_y)
     big_u = 2.0 * viscosity * u / (e_prime * r_x)
     moes = beta ** 0.25 * kap * (load / (e_prime * r_x * r_x)) / big_u ** 0.75
     ehl = 1.8 * beta ** -0.25

@@ -20,7 +20,7 @@ from .bearingfile import BearingFile, as_setup, dumps_bearing, load_bearing, loa
 from .setup import BearingSetup
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
-from .errors import BearingSimulationError, QuasiStaticError, TractionCoefficientWarning
+from .errors import BearingSimulationError, NumpyPathWarning, QuasiStaticError, TractionCoefficientWarning
 from .model.assembly import SettleShaft
 from .model.builder import BearingHandle, CreateAngularContactBearing
 from .presets import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
@@ -54,6 +54,6 @@ __all__ = [
     # skid criteria
     "gyroscopic_minimum_axial", "hirano_minimum_axial",
     # errors and warnings
-    "BearingSimulationError", "QuasiStaticError", "TractionCoefficientWarning",
+    "BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "TractionCoefficientWarning",
     "__version__",
 ]

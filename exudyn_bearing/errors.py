@@ -1,6 +1,6 @@
 """The package's errors and warnings, in one place (docs/ARCHITECTURE.md)."""
 
-__all__ = ["BearingSimulationError", "QuasiStaticError", "TractionCoefficientWarning"]
+__all__ = ["BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "TractionCoefficientWarning"]
 
 
 class BearingSimulationError(RuntimeError):
@@ -15,3 +15,9 @@ class QuasiStaticError(RuntimeError):
 class TractionCoefficientWarning(UserWarning):
     """A contact's traction coefficient exceeded
     :data:`exudyn_bearing.results.outputs.TRACTION_COEFFICIENT_LIMIT`."""
+
+
+class NumpyPathWarning(UserWarning):
+    """A contact law has no compiled form: its contacts are evaluated by the numpy functions
+    of :mod:`contact` (the same physics, several times slower per force evaluation). Said
+    once per law and process; ``ContactLaw(compiled=False)`` chooses that path silently."""

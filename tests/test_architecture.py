@@ -183,3 +183,27 @@ def test_cached_kernels_that_call_another_files_kernels_drop_stale_caches():
                         and not _covered_by_package_drop(path):
                     offenders.append(f"{path.relative_to(ROOT)} calls {sorted(called)} of {source.relative_to(ROOT)}")
     assert not offenders, offenders
+
+
+#: the constants of the laws written once as scalar numba functions (MODEL.md §3, §5): the
+#: Brewe–Hamrock fits and the Hamrock–Dowson central film
+ONCE = {"1.0339": "Brewe–Hamrock k", "1.5277": "Brewe–Hamrock F", "0.5968": "Brewe–Hamrock E",
+        "2.69": "Hamrock–Dowson h_c", "0.067": "Hamrock–Dowson h_c's load exponent"}
+
+
+def test_each_contact_law_is_written_once():
+    """Each constant of those laws appears as a number in the code of one module only (the
+    compiled kernels call the scalar law the numpy path applies to arrays); docstrings and
+    comments do not count."""
+    import io
+    import tokenize
+
+    where = {number: [] for number in ONCE}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            tokens = tokenize.generate_tokens(io.StringIO(path.read_text(encoding="utf-8")).readline)
+            numbers = {t.string for t in tokens if t.type == tokenize.NUMBER}
+            for number in ONCE:
+                if number in numbers:
+                    where[number].append(str(path.relative_to(ROOT)))
+    assert all(len(files) == 1 for files in where.values()), {ONCE[n]: f for n, f in where.items()}

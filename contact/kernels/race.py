@@ -1,9 +1,9 @@
 """Ball–race contacts of a whole bearing, compiled, for B states at once (MODEL.md §2–§6).
 
 :func:`race_contacts` computes, contact by contact, what the numpy path computes on arrays:
-kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), Hertz fits (§3,
-:func:`contact.hertz.hertz_contact` with ``method='fit'``), the damped normal load, the
-Hamrock–Dowson film (§5, P17), the Crook traction by the fast rule
+kinematics (MODEL.md §2, §6; :mod:`contact.kinematics`), the Hertz fits (§3) and the
+Hamrock–Dowson film (§5, P17) by the same scalar laws the numpy path applies
+(:mod:`contact.hertz`, :mod:`contact.film`), the damped normal load, the Crook traction by the fast rule
 (:func:`contact.kernels.crook.crook_one`) and the per-contact terms of :mod:`contact.terms`;
 force and moment on the ball as :func:`contact.ballrace.ball_race_forces`.
 :func:`race_contacts_parallel` spreads the contacts over threads (the kernel runs without the GIL).
@@ -16,6 +16,8 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 from numba import get_num_threads, njit
 
+from ..film import central_film
+from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
 from ..terms import ContactState, ball_surface_height, contact_loads, film_factor, surface_height
 from .crook import crook_one
 
@@ -145,11 +147,9 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
     r_y = f_conf * diam / (2.0 * f_conf - 1.0)
     ratio = max(r_y / r_x, 1.0)
-    ell = 1.0339 * ratio ** 0.6360
-    first = 1.5277 + 0.6023 * math.log(ratio)
-    second = 1.0003 + 0.5968 / ratio
+    ell, second = fit_ellipticity(ratio), fit_second_integral(ratio)
     radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
-    stiff = math.pi * ell * e_prime * math.sqrt(second * radius / (4.5 * first ** 3))
+    stiff = stiffness_of(ell, fit_first_integral(ratio), second, radius, e_prime)
     q = 0.0
     if pen > 0.0:
         q = stiff * pen ** 1.5
@@ -163,15 +163,10 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     m_r = 0.0  # rolling-resistance couple about t2, on the ball
     f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if law.traction == 1 and q > 0.0:
-        base = 6.0 * second * q * radius / (math.pi * e_prime)
-        sa = np.cbrt(ell * ell * base)
-        sb = np.cbrt(base / ell)
-        p_max = 1.5 * q / (math.pi * sa * sb)
-        # Hamrock–Dowson central film (P17), floored
-        u_d = eta0 * abs(entrainment) / (e_prime * r_x)
-        w_d = q / (e_prime * r_x * r_x)
-        h = r_x * 2.69 * u_d ** 0.67 * (c_p * e_prime) ** 0.53 * w_d ** -0.067 * (
-            1.0 - 0.61 * math.exp(-0.73 * ell))
+        sa = semi_axis_of(q, ell, second, radius, e_prime, True)
+        sb = semi_axis_of(q, ell, second, radius, e_prime, False)
+        p_max = max_pressure_of(q, sa, sb)
+        h = central_film(entrainment, q, r_x, ell, e_prime, eta0, c_p)  # Hamrock–Dowson (P17), floored below
         rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
         cs = ContactState(q, sa, sb, p_max, h, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
         phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1

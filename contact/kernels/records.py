@@ -12,6 +12,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..traction_laws import traction_model
+
 __all__ = ["BallStates", "BodyStates", "CageRecord", "ContactOutputs", "CrookTables", "LawRecord", "RaceFrames",
            "RaceGeometry", "law_record", "traction_record"]
 
@@ -118,6 +120,7 @@ def traction_record(lubricant, limiting_shear=None, film_modulus=None) -> LawRec
 def law_record(law, lubricant) -> LawRecord:
     """The :class:`LawRecord` of a :class:`contact.ballrace.ContactLaw` with ``lubricant``."""
     base = traction_record(lubricant, law.limiting_shear_for(lubricant), law.film_modulus_for(lubricant))
-    return base._replace(traction=1 if law.crook else 0, spin_moment=bool(law.spin_moment),
+    kernel = traction_model(law.traction).kernel  # None: the law runs on the numpy path
+    return base._replace(traction=kernel or 0, spin_moment=bool(law.spin_moment),
                          damping_ratio=float(law.damping_ratio), min_film=float(law.min_film_thickness),
                          max_barus=float(law.max_barus_exponent))

@@ -124,6 +124,8 @@ class BearingConnector(ConnectorDiagnostics):
                 self._rotations = compiled.kernels.rotation_matrices
                 self._land_kernel = compiled.kernels.land_forces
                 self._frame_rows = (self.origin[None].copy(), np.zeros((1, 3)), self.axis[None].copy())
+            else:
+                compiled.say_numpy_path(law)
 
     # -- state of a race frame ---------------------------------------------------------
     def _race_frame(self, name, t, pos, vel, rot, omega):

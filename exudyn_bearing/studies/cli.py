@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 
-from contact.ballrace import TRACTION_MODELS
+from contact.traction_laws import TRACTION_LAWS
 from contact.ballrace import ContactLaw as ContactLawDefaults
 from ..bearingfile import as_setup
 from ..presets import REFERENCE_BEARING
@@ -339,10 +339,9 @@ def _join_negative_values(argv):
 
 
 def _traction_option(p) -> None:
-    p.add_argument("--traction", choices=TRACTION_MODELS, default=None,
-                   help="ball-race traction law (MODEL.md §6, §6a): crook-limited = Crook with the lubricant's "
-                        "limiting shear stress, crook = the paper's pure Crook law (default: the bearing file's "
-                        "[contact_law], else crook-limited)")
+    p.add_argument("--traction", choices=tuple(TRACTION_LAWS), default=None,
+                   help="ball-race traction law: " + "; ".join(f"{m.name} = {m.summary}" for m in TRACTION_LAWS.values())
+                        + " (default: the bearing file's [contact_law], else crook-limited)")
     # the losses beyond the paper (MODEL.md §11), off by default
     p.add_argument("--rolling-resistance", action="store_true",
                    help="hydrodynamic rolling resistance at each contact (MODEL.md §11b; or the bearing file's "
