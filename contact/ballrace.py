@@ -203,9 +203,10 @@ class ContactForces:
     film_thickness: np.ndarray  #: h_c, m (0 where unloaded)
     max_pressure: np.ndarray  #: p_max, Pa
     heat: np.ndarray  #: integral of tau . u over the patch, W
-    #: rolling-resistance moment on the ball about t2 (the race takes the opposite), N m (§11b)
+    #: rolling-resistance moment on the ball about t2 (the race takes the opposite), N m (§11b),
+    #: with the couples of registered terms (contact.terms.register_term)
     rolling_moment: np.ndarray = None
-    #: power the rolling resistance dissipates, W (>= 0)
+    #: power the rolling resistance (and the registered terms' stage 2) dissipates, W (>= 0)
     rolling_loss: np.ndarray = None
     #: power the normal contact damping dissipates, W
     damping_loss: np.ndarray = None
@@ -266,7 +267,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
                     entrainment=kin.entrainment[idx], rolling_rate=rate[idx], ball_radius=0.5 * params.ball_diameter,
                     e_prime=params.effective_modulus, viscosity=lubricant.viscosity)
             h[idx] = np.maximum(phi_t * h_c, law.min_film_thickness)
-            if law.rolling_resistance:
+            stage_2 = law.rolling_resistance or len(terms.registered) > 0
+            if stage_2:
                 rolling[idx], rolling_push[idx] = couple, push
                 # the couple's power and the force pair's at the contact point (u = race − ball)
                 rolling_loss[idx] = -rolling[idx] * kin.rolling_rate[idx] + rolling_push[idx] * kin.slip_rolling[idx]
@@ -281,7 +283,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     force = -load[:, None] * kin.normal + (fx + rolling_push)[:, None] * kin.rolling + fy[:, None] * kin.transverse
     # lever arm p - c = r n: the normal force has no moment about the ball centre
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
-    if law.rolling_resistance:
+    if law.rolling_resistance or (terms is not None and len(terms.registered) > 0):
         moment = moment + rolling[:, None] * kin.transverse
     if kin.surface_slope is not None:  # the tilted common normal, through the ball centre (eq. 13.7)
         force = force - (load * kin.surface_slope)[:, None] * kin.rolling

@@ -25,7 +25,8 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
+from numba import literal_unroll, njit
+from numba.extending import overload
 
 # the stages call the term laws of other files (a new term's too): contact/__init__.py drops
 # this module's numba cache when any of them changed
@@ -34,8 +35,9 @@ from .ball_surface import ball_height
 from .surface import NO_SURFACE, SurfaceRecord, race_height
 from .thermal_film import film_factor as thermal_film_factor
 
-__all__ = ["TermRecord", "ContactState", "term_record", "surface_height", "ball_surface_height", "film_factor",
-           "contact_loads", "contact_terms", "surface_terms", "plain_terms", "terms_from_plain"]
+__all__ = ["TermRecord", "ContactState", "Term", "TERMS", "register_term", "term_record", "surface_height",
+           "ball_surface_height", "film_factor", "contact_loads", "contact_terms", "surface_terms", "plain_terms",
+           "terms_from_plain", "no_film_factor", "no_contact_loads"]
 
 #: floor of the thermal film factor φ_T (MODEL.md §11e)
 THERMAL_FLOOR = 0.05
@@ -53,11 +55,90 @@ class TermRecord(NamedTuple):
     surface: SurfaceRecord  #: defects, waviness, ball sizes (MODEL.md §13); empty arrays: off
     heating: float = 0.0  #: c_ηT / K_c of the thermal film factor (MODEL.md §11e), m/W
     rolling_width: float = 0.0  #: truncation width 𝓛 of the rolling resistance (MODEL.md §11b, the ball diameter), m
+    #: the registered terms (:func:`register_term`) that apply to this contact law, as :class:`Term`
+    registered: tuple = ()
 
     @property
     def per_contact(self) -> bool:
         """Whether a stage-1 or stage-2 term is on (the surface is stage 0)."""
-        return self.heating > 0.0 or self.rolling_width > 0.0
+        return self.heating > 0.0 or self.rolling_width > 0.0 or len(self.registered) > 0
+
+
+@njit(cache=True, error_model="numpy")
+def no_film_factor(parameter, cs):
+    """A registered term's stage 1 when it has none: the factor 1."""
+    return 1.0
+
+
+@njit(cache=True, error_model="numpy")
+def no_contact_loads(parameter, cs, phi):
+    """A registered term's stage 2 when it has none: no force, no couple."""
+    return 0.0, 0.0
+
+
+class Term(NamedTuple):
+    """A per-contact term registered from outside this module (:func:`register_term`): its
+    two stages as numba-compiled functions of its ``parameter`` and the contact's
+    :class:`ContactState` — ``film_factor(parameter, cs)`` a factor on the film thickness,
+    ``contact_loads(parameter, cs, phi)`` (force on the ball along t1 N, couple about t2 N m)
+    at film factor ``phi`` — like the built-in stages below."""
+
+    film_factor: object = no_film_factor
+    contact_loads: object = no_contact_loads
+    parameter: float = 0.0
+
+
+#: the registered terms by name: (:class:`Term`, which contact laws it applies to: a function
+#: of the :class:`contact.ballrace.ContactLaw`, or None for every Crook law)
+TERMS: dict = {}
+
+
+def register_term(name: str, term: Term, applies=None) -> None:
+    """Add a per-contact term to every contact evaluated from now on, in both force paths and
+    the Jacobian, for the Crook laws (``applies(law)`` True, if given). Its functions must be
+    numba-compiled (``@njit``); the kernels are compiled once more for each set of
+    registered terms. Remove it with ``del TERMS[name]``."""
+    if not isinstance(term, Term):
+        raise ValueError(f"register_term takes a contact.terms.Term, got {term!r}")
+    if name in TERMS:
+        raise ValueError(f"a term {name!r} is registered already")
+    TERMS[name] = (term, applies)
+
+
+def _registered_film(registered, cs, phi):
+    """phi times the registered terms' film factors (compiled through the overload below)."""
+    raise NotImplementedError
+
+
+def _registered_loads(registered, cs, phi, push, couple):
+    """(push, couple) plus the registered terms' stage 2 (compiled through the overload below)."""
+    raise NotImplementedError
+
+
+@overload(_registered_film)
+def _registered_film_impl(registered, cs, phi):
+    if len(registered) == 0:  # (a term-free bearing compiles to nothing here)
+        return lambda registered, cs, phi: phi
+
+    def impl(registered, cs, phi):
+        for term in literal_unroll(registered):
+            phi *= term.film_factor(term.parameter, cs)
+        return phi
+    return impl
+
+
+@overload(_registered_loads)
+def _registered_loads_impl(registered, cs, phi, push, couple):
+    if len(registered) == 0:
+        return lambda registered, cs, phi, push, couple: (push, couple)
+
+    def impl(registered, cs, phi, push, couple):
+        for term in literal_unroll(registered):
+            f, m = term.contact_loads(term.parameter, cs, phi)
+            push += f
+            couple += m
+        return push, couple
+    return impl
 
 
 class ContactState(NamedTuple):
@@ -84,8 +165,10 @@ def term_record(law, lubricant, ball_diameter, surface: SurfaceRecord = NO_SURFA
     the bearing's ``surface`` (:func:`contact.surface.surface_record`)."""
     crook = law.crook
     heating = lubricant.shear_heating
+    registered = tuple(term for term, applies in TERMS.values() if crook and (applies is None or applies(law)))
     return TermRecord(surface, heating=heating if (crook and law.thermal_film) else 0.0,
-                      rolling_width=float(ball_diameter) if (crook and law.rolling_resistance) else 0.0)
+                      rolling_width=float(ball_diameter) if (crook and law.rolling_resistance) else 0.0,
+                      registered=registered)
 
 
 def plain_terms(terms: TermRecord) -> tuple:
@@ -129,7 +212,7 @@ def film_factor(terms, cs):
     if terms.heating > 0.0 and cs.entrainment != 0.0:  # inlet shear heating (MODEL.md §11e)
         phi = thermal_film_factor(cs.entrainment, cs.slip, cs.max_pressure, cs.e_prime, cs.viscosity, terms.heating,
                                   THERMAL_FLOOR)
-    return phi
+    return _registered_film(terms.registered, cs, phi)
 
 
 @njit(cache=True, error_model="numpy")
@@ -142,7 +225,7 @@ def contact_loads(terms, cs, phi):
         f_r = hydrodynamic_force(cs.load, cs.entrainment, cs.r_x, cs.r_y, cs.a, cs.b, cs.e_prime, cs.viscosity,
                                  terms.rolling_width, phi)
         couple, push = rolling_loads(f_r, cs.r_x, cs.ball_radius, cs.rolling_rate)
-    return push, couple
+    return _registered_loads(terms.registered, cs, phi, push, couple)
 
 
 @njit(cache=True, error_model="numpy")

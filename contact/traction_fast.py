@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import threading
 from functools import lru_cache
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -148,7 +149,8 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
     (κ, ū (n,)) puts the film's elastic compliance in series (MODEL.md §6b, no derivatives).
 
     Nodes are laid out (R radial, D directions, n contacts), contacts innermost, so that
-    per-ray arrays (D, n) broadcast over whole contiguous blocks."""
+    per-ray arrays (D, n) broadcast over whole contiguous blocks. The stages below share one
+    namespace of arrays: per contact (n,), per ray (D, n) and per node (R, D, n)."""
     c_p, c1_coef, order, derivatives, lam_s, elastic = rule
     n = ux.shape[0]
     lo = np.minimum(a, b)
@@ -163,14 +165,38 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
     if c_p * pm.max() > _FAST_LAMBDA_MAX[bool(derivatives)]:
         return _accurate_crook(ux, uy, om, a, b, pm, hh, eta_t, rule).T.copy()
     tab = _fast_tables(order)
-    R, D = tab["R"], tab["D"]
+    k = SimpleNamespace(ux=ux, uy=uy, om=om, a=a, b=b, pm=pm, hh=hh, eta_t=eta_t, c_p=c_p, c1_coef=c1_coef,
+                        derivatives=derivatives, lam_s=lam_s, elastic=elastic, n=n, lo=lo, tab=tab, R=tab["R"],
+                        D=tab["D"], Hk=None)
+    _fast_pole(k)
+    _fast_rays(k)
+    _fast_nodes(k)
+    _fast_slip(k)
+    _fast_law(k)
+    if elastic is not None:
+        _fast_elastic(k)
+    if lam_s is not None:
+        # |τ| = Λp tanh(|τ_C|/(Λp)) (MODEL.md §6a) in this rule's units: g h/η_T, u' = c1(η_T) u
+        # (|u'| = √u2), so τ_L' = Λ p h c1(η_T)/η_T with p = (λσ)/c_ηP (σ p_max without c_ηP)
+        scale = (1.0 / c_p) if c_p > 0.0 else pm
+        tl = k.lsig * (lam_s * scale * hh * np.sqrt(k.cth) / eta_t).astype(_F32)
+        k.G, k.Hk = limit_shear(k.G, np.sqrt(k.u2), tl, k.Hk if derivatives else None)
+    res = _fast_sums(k)
+    if derivatives:
+        _fast_jacobian(k, res)
+    return res
 
-    # ---- per contact: pole, rule (as _analyse), gradings
+
+def _fast_pole(k):
+    """Per contact: the spin pole, the rule (mode P rays from the pole or rays from the
+    centre, as _analyse) and the tabulated gradings (``lev``, ``lr``); the ray origin and the
+    slip there."""
+    ux, uy, om, a, b, lo, n = k.ux, k.uy, k.om, k.a, k.b, k.lo, k.n
     hi = np.maximum(a, b)
     a_long = a >= b
-    ab = a * b
-    lam = c_p * pm
-    cth = c1_coef * eta_t  # c1² = cth e^{λσ}
+    k.ab = ab = a * b
+    k.lam = lam = k.c_p * k.pm
+    k.cth = cth = k.c1_coef * k.eta_t  # c1² = cth e^{λσ}
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv_w = 1.0 / om
         Xp = uy * inv_w
@@ -203,7 +229,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
         rr2 = rho_ridge * rho_ridge
         mode_p = inside & ((rho_pole < hi)
                            | ((r2r < 1.0) & ((rp2 - r2r) * lo2 + rr2 < hi2)))
-        allp = mode_p.all()
+        k.allp = allp = mode_p.all()
         # main breakpoints: P the ridge directions, C towards/away from the pole
         eps = np.arcsinh(np.sqrt((lo2 + 0.25 * rr2) / (hi2 - lo2)))
         th0 = 0.5 * np.pi * ~a_long
@@ -226,79 +252,96 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
         np.rint(lev, out=lev)
         np.fmin(np.fmax(lev, 0.0, out=lev), _FAST_LEV_MAX, out=lev)  # NaN → 0
         lev, lr = lev.astype(np.intp)
+    k.th0 = th0
     if allp:
-        Xo, Yo, rO = Xp, Yp, 1.0 - rp2  # ray origin, 1 − |O|²
-        uOx = uOy = np.zeros(n)  # slip at the origin
+        k.Xo, k.Yo, k.rO = Xp, Yp, 1.0 - rp2  # ray origin, 1 − |O|²
+        k.uOx = k.uOy = np.zeros(n)  # slip at the origin
     else:
         lr[~mode_p] = _FAST_N_BETA  # rays from the centre
-        Xo = Xp * mode_p
-        Yo = Yp * mode_p
-        rO = 1.0 - (Xo * Xo + Yo * Yo)
+        k.Xo = Xp * mode_p
+        k.Yo = Yp * mode_p
+        k.rO = 1.0 - (k.Xo * k.Xo + k.Yo * k.Yo)
         not_p = ~mode_p
-        uOx = ux * not_p
-        uOy = uy * not_p
+        k.uOx = ux * not_p
+        k.uOy = uy * not_p
+    k.lev, k.lr = lev, lr
 
-    # ---- rays (D, n): directions, then ρ_max forwards and ρ_2 backwards to the ellipse
-    psi = np.take(tab["psi"], lev, axis=1)  # np.take: C-ordered result
-    psi += th0
+
+def _fast_rays(k):
+    """Per ray (D, n): directions, then ρ_max forwards and ρ_2 backwards to the ellipse."""
+    psi = np.take(k.tab["psi"], k.lev, axis=1)  # np.take: C-ordered result
+    psi += k.th0
     psi = psi.astype(_F32)
-    c = np.cos(psi)
-    s = np.sin(psi)
-    oe = c * Xo
-    oe += s * Yo
+    k.c = c = np.cos(psi)
+    k.s = s = np.sin(psi)
+    oe = c * k.Xo
+    oe += s * k.Yo
     hc = oe * oe
-    hc += rO
+    hc += k.rO
     np.sqrt(hc, out=hc)  # half chord
-    rmax = hc - oe
+    k.rmax = rmax = hc - oe
     hc += oe
-    r2 = hc.astype(_F32)
-    rm = rmax.astype(_F32)
-    bc = c * b.astype(_F32)  # ray direction, metres per unit ρ
-    as_ = s * a.astype(_F32)
-    q2 = bc * bc
+    k.r2 = hc.astype(_F32)
+    k.rm = rmax.astype(_F32)
+    k.bc = bc = c * k.b.astype(_F32)  # ray direction, metres per unit ρ
+    k.as_ = as_ = s * k.a.astype(_F32)
+    k.q2 = q2 = bc * bc
     q2 += as_ * as_
 
-    # ---- nodes (R, D, n): ρ, σ = p/p_max (work arrays reused between calls)
-    rho, t, sg, sq, rt, z, d = _fast_work(R, D, n)
-    pr = np.take(tab["rho"], lr, axis=1)  # (R, n)
-    np.multiply(rm, pr[:, None, :], out=rho)
-    np.subtract(rm, rho, out=t)
-    np.add(rho, r2, out=sg)
+
+def _fast_nodes(k):
+    """Per node (R, D, n): ρ and σ = p/p_max, and e^{λσ} (work arrays reused between calls)."""
+    k.work = rho, t, sg, sq, rt, z, d = _fast_work(k.R, k.D, k.n)
+    k.rho = rho
+    k.pr = pr = np.take(k.tab["rho"], k.lr, axis=1)  # (R, n)
+    np.multiply(k.rm, pr[:, None, :], out=rho)
+    np.subtract(k.rm, rho, out=t)
+    np.add(rho, k.r2, out=sg)
     sg *= t  # 1 − X² − Y² = (ρ_max − ρ)(ρ + ρ_2)
     np.sqrt(sg, out=sg)
-    sigma = sg.copy() if elastic is not None else None
-    lsig = None
-    if c_p > 0.0:
-        lrow = np.empty((D, n), _F32)
-        lrow[...] = lam
+    k.sigma = sg.copy() if k.elastic is not None else None
+    k.lsig = None
+    if k.c_p > 0.0:
+        lrow = np.empty((k.D, k.n), _F32)
+        lrow[...] = k.lam
         sg *= lrow  # λσ = c_ηP p
-        if lam_s is not None:
-            lsig = sg.copy()
-        E = np.exp(sg, out=sg)  # η/η_T
+        if k.lam_s is not None:
+            k.lsig = sg.copy()
+        k.E = np.exp(sg, out=sg)  # η/η_T
     else:
-        if lam_s is not None:
-            lsig = sg.copy()
+        if k.lam_s is not None:
+            k.lsig = sg.copy()
         sg[...] = _ONE
-        E = sg
-    # u2 = c1(η_T)² |u|² = A + ρ (B + C ρ) per ray
-    np.multiply(rho, q2 * (om * om * cth).astype(_F32), out=t)
-    if allp:
+        k.E = sg
+
+
+def _fast_slip(k):
+    """u2 = c1(η_T)² |u|² = A + ρ (B + C ρ) per ray, into the work array ``t``."""
+    rho, t = k.rho, k.work[1]
+    om, cth = k.om, k.cth
+    np.multiply(rho, k.q2 * (om * om * cth).astype(_F32), out=t)
+    if k.allp:
         t *= rho
         t += _FAST_PSI_MIN
     else:
         wc = 2.0 * om * cth
-        Br = bc * (wc * uOy).astype(_F32)
-        Br -= as_ * (wc * uOx).astype(_F32)
+        Br = k.bc * (wc * k.uOy).astype(_F32)
+        Br -= k.as_ * (wc * k.uOx).astype(_F32)
         t += Br
         t *= rho
-        Ar = np.empty((D, n), _F32)
-        Ar[...] = (uOx * uOx + uOy * uOy) * cth + 1e-12
+        Ar = np.empty((k.D, k.n), _F32)
+        Ar[...] = (k.uOx * k.uOx + k.uOy * k.uOy) * cth + 1e-12
         t += Ar
-    u2 = t.copy() if lam_s is not None or elastic is not None else None
-    psi = t
+    k.u2 = t.copy() if k.lam_s is not None or k.elastic is not None else None
+
+
+def _fast_law(k):
+    """The Crook law's g h/η_T = G(ψ) e^{λσ} at the nodes (and k h/(c1c η_T²) with
+    derivatives): G(ψ) = asinh(s)/(s r), s = √ψ, r = √(1 + ψ); asinh(s) = log1p(z),
+    z = s + ψ/(1 + r), log1p(z) = log(1 + z) z/((1 + z) − 1)."""
+    _rho, psi, _sg, sq, rt, z, d = k.work
+    E = k.E
     psi *= E  # ψ = c1² |u|²
-    # G(ψ) = asinh(s)/(s r), s = √ψ, r = √(1 + ψ); asinh(s) = log1p(z), z = s + ψ/(1 + r),
-    # log1p(z) = log(1 + z) z/((1 + z) − 1)
     np.sqrt(psi, out=sq)
     np.add(psi, _ONE, out=rt)
     np.sqrt(rt, out=rt)
@@ -312,7 +355,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
     z /= d
     G *= z
     G /= sq
-    if derivatives:
+    if k.derivatives:
         # H = G'(s)/s = (1 − G (1 + 2ψ))/(ψ (1 + ψ)), its series −4/3 + 32ψ/15 − 96ψ²/35
         # for small ψ
         Hk = np.add(psi, psi, out=d)
@@ -330,105 +373,113 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
         Hk = np.where(psi < _FAST_H_PSI, ser, Hk)
         Hk *= E
         Hk *= E  # k h/(c1c η_T²), ∂τ/∂u = g I + k u uᵀ
+        k.Hk = Hk
     G *= E  # g h/η_T
-    if elastic is not None:
-        # Maxwell film in series (MODEL.md §6b): g/(1 + R), R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|)
-        # with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.kernels.crook)
-        kap, ent = elastic
-        sgn = np.where(ent < 0, -1.0, 1.0)
-        live = (ent != 0.0)
-        er0 = np.where(live, eta_t * np.abs(ent) / (np.sqrt(cth) * kap * pm * b), 0.0).astype(_F32)
-        yy = Yo.astype(_F32) + rho * s
-        xi = Xo.astype(_F32) + rho * c + sgn.astype(_F32) * np.sqrt(np.maximum(_ONE - yy * yy, _F32(0.0)))
-        omb = (om * b).astype(_F32)
-        oxi = omb * xi
-        w2 = u2 * (1.0 / cth).astype(_F32) + oxi * (_F32(0.25) * oxi - uOy.astype(_F32) - omb * c * rho)
-        dd = sigma * np.abs(xi) * np.sqrt(np.maximum(w2, _F32(0.0))) + _F32(1e-30)  # no 0/0 at ū → 0
-        G = G * (dd / (dd + G * np.sqrt(u2) * er0))
-    if lam_s is not None:
-        # |τ| = Λp tanh(|τ_C|/(Λp)) (MODEL.md §6a) in this rule's units: g h/η_T, u' = c1(η_T) u
-        # (|u'| = √u2), so τ_L' = Λ p h c1(η_T)/η_T with p = (λσ)/c_ηP (σ p_max without c_ηP)
-        scale = (1.0 / c_p) if c_p > 0.0 else pm
-        tl = lsig * (lam_s * scale * hh * np.sqrt(cth) / eta_t).astype(_F32)
-        G, Hk = limit_shear(G, np.sqrt(u2), tl, Hk if derivatives else None)
+    k.G = G
 
-    # ---- sums: along each ray ∑ g W ρ^j (W = ρ_max² wψ × table), then over the rays
-    npow = 5 if derivatives else 3
-    pat = np.empty((npow, R, n), _F32)
+
+def _fast_elastic(k):
+    """The Maxwell film in series (MODEL.md §6b): g/(1 + R), R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|)
+    with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.kernels.crook)."""
+    kap, ent = k.elastic
+    om, b, rho, c = k.om, k.b, k.rho, k.c
+    sgn = np.where(ent < 0, -1.0, 1.0)
+    live = (ent != 0.0)
+    er0 = np.where(live, k.eta_t * np.abs(ent) / (np.sqrt(k.cth) * kap * k.pm * b), 0.0).astype(_F32)
+    yy = k.Yo.astype(_F32) + rho * k.s
+    xi = k.Xo.astype(_F32) + rho * c + sgn.astype(_F32) * np.sqrt(np.maximum(_ONE - yy * yy, _F32(0.0)))
+    omb = (om * b).astype(_F32)
+    oxi = omb * xi
+    w2 = k.u2 * (1.0 / k.cth).astype(_F32) + oxi * (_F32(0.25) * oxi - k.uOy.astype(_F32) - omb * c * rho)
+    dd = k.sigma * np.abs(xi) * np.sqrt(np.maximum(w2, _F32(0.0))) + _F32(1e-30)  # no 0/0 at ū → 0
+    k.G = k.G * (dd / (dd + k.G * np.sqrt(k.u2) * er0))
+
+
+def _fast_sums(k):
+    """Along each ray ∑ g W ρ^j (W = ρ_max² wψ × table), then over the rays: the forces, the
+    moment and the heat, (13 or 4, n) with the Jacobian's rows left to :func:`_fast_jacobian`."""
+    tab, lr, lev, pr, n = k.tab, k.lr, k.lev, k.pr, k.n
+    om, rmax, uOx, uOy = k.om, k.rmax, k.uOx, k.uOy
+    npow = 5 if k.derivatives else 3
+    k.pat = pat = np.empty((npow, k.R, n), _F32)
     pat[0] = np.take(tab["w"], lr, axis=1)
     for j in range(1, npow):
         np.multiply(pat[j - 1], pr, out=pat[j])
-    K = np.einsum("jrn,rdn->jdn", pat[:3], G)
+    K = np.einsum("jrn,rdn->jdn", pat[:3], k.G)
     w0 = np.take(tab["wpsi"], lev, axis=1)
     w0 *= rmax
-    w0 *= rmax * (ab * eta_t / hh)
-    S0 = np.einsum("dn,dn->n", K[0], w0)  # ∬ g dA and ∬ g (x', y', x'² + y'²) dA
+    w0 *= rmax * (k.ab * k.eta_t / k.hh)
+    k.S0 = S0 = np.einsum("dn,dn->n", K[0], w0)  # ∬ g dA and ∬ g (x', y', x'² + y'²) dA
     w0 *= rmax
     K1 = K[1]
     K1 *= w0
-    Sx = np.einsum("dn,dn->n", K1, bc)
-    Sy = np.einsum("dn,dn->n", K1, as_)
+    k.Sx = Sx = np.einsum("dn,dn->n", K1, k.bc)
+    k.Sy = Sy = np.einsum("dn,dn->n", K1, k.as_)
     w0 *= rmax
-    w0 *= q2
-    Sr = np.einsum("dn,dn->n", K[2], w0)
-    xo = Xo * b
-    yo = Yo * a
+    w0 *= k.q2
+    k.Sr = Sr = np.einsum("dn,dn->n", K[2], w0)
+    k.xo = xo = k.Xo * k.b
+    k.yo = yo = k.Yo * k.a
     # τ = g u, u = u_O + ω (−y', x'):  f = u_O S0 + ω (−S'y, S'x)
-    res = np.empty((13 if derivatives else 4, n))
+    res = np.empty((13 if k.derivatives else 4, n))
     fx, fy, mz, heat = res[:4]
     np.multiply(om, Sy, out=fx)
     np.negative(fx, out=fx)
     np.multiply(om, Sx, out=fy)
     np.multiply(om, Sr, out=mz)
     np.multiply(om, mz, out=heat)
-    if not allp:
+    if not k.allp:
         fx += uOx * S0
         fy += uOy * S0
         cross = uOy * Sx - uOx * Sy
         mz += cross
         heat += (uOx * uOx + uOy * uOy) * S0 + 2.0 * om * cross
     mz += xo * fy - yo * fx
-    if derivatives:
-        # ∂(f, M_z)/∂(u_x, u_y, ω_s) = ∬ g EᵀE + k v vᵀ dA, v = (u_x, u_y, x u_y − y u_x);
-        # along a ray v = (uOx + dx ρ, uOy + dy ρ, p1 ρ + p2 ρ²) (x u_y − y u_x = 0 at the
-        # origin: the pole, or the centre), so ∑ k v vᵀ needs V_j = ∑ k W ρ^j, j ≤ 4
-        V = np.einsum("jrn,rdn->jdn", pat, Hk)
-        wrow = np.take(tab["wpsi"], lev, axis=1)
-        wrow *= rmax
-        wrow *= rmax
-        for j in range(5):
-            V[j] *= wrow
-            if j < 4:
-                wrow *= rmax
-        dx = as_ * -om
-        dy = bc * om
-        p1 = xo * dy - yo * dx + bc * uOy - as_ * uOx
-        p2 = q2 * om
-        V0, V1, V2, V3, V4 = V
-        dx1 = dx * V1
-        dy1 = dy * V1
-        dx2 = dx * V2
-        dy2 = dy * V2
-        Q = p1 * V2 + p2 * V3
-        A0 = V0.sum(0)
-        A1x = dx1.sum(0)
-        A1y = dy1.sum(0)
-        Axx = np.einsum("dn,dn->n", dx, dx2)
-        Axy = np.einsum("dn,dn->n", dx, dy2)
-        Ayy = np.einsum("dn,dn->n", dy, dy2)
-        B = np.einsum("dn,dn->n", p1, V1) + np.einsum("dn,dn->n", p2, V2)
-        Cx = np.einsum("dn,dn->n", dx, Q)
-        Cy = np.einsum("dn,dn->n", dy, Q)
-        Czz = np.einsum("dn,dn->n", p1, Q) + np.einsum("dn,dn->n", p2, p1 * V3 + p2 * V4)
-        kf = ab * eta_t / hh * c1_coef * eta_t
-        J = res[4:].reshape(3, 3, n)
-        J[0, 0] = (uOx * uOx * A0 + 2.0 * uOx * A1x + Axx) * kf + S0
-        J[1, 1] = (uOy * uOy * A0 + 2.0 * uOy * A1y + Ayy) * kf + S0
-        J[0, 1] = (uOx * uOy * A0 + uOx * A1y + uOy * A1x + Axy) * kf
-        J[0, 2] = (uOx * B + Cx) * kf - (yo * S0 + Sy)
-        J[1, 2] = (uOy * B + Cy) * kf + (xo * S0 + Sx)
-        J[2, 2] = Czz * kf + (xo * xo + yo * yo) * S0 + 2.0 * (xo * Sx + yo * Sy) + Sr
-        J[1, 0] = J[0, 1]
-        J[2, 0] = J[0, 2]
-        J[2, 1] = J[1, 2]
     return res
+
+
+def _fast_jacobian(k, res):
+    """∂(f, M_z)/∂(u_x, u_y, ω_s) = ∬ g EᵀE + k v vᵀ dA, v = (u_x, u_y, x u_y − y u_x), into
+    rows 4… of ``res``: along a ray v = (uOx + dx ρ, uOy + dy ρ, p1 ρ + p2 ρ²) (x u_y − y u_x = 0
+    at the origin: the pole, or the centre), so ∑ k v vᵀ needs V_j = ∑ k W ρ^j, j ≤ 4."""
+    om, rmax, bc, as_, uOx, uOy = k.om, k.rmax, k.bc, k.as_, k.uOx, k.uOy
+    xo, yo, S0, Sx, Sy, Sr = k.xo, k.yo, k.S0, k.Sx, k.Sy, k.Sr
+    V = np.einsum("jrn,rdn->jdn", k.pat, k.Hk)
+    wrow = np.take(k.tab["wpsi"], k.lev, axis=1)
+    wrow *= rmax
+    wrow *= rmax
+    for j in range(5):
+        V[j] *= wrow
+        if j < 4:
+            wrow *= rmax
+    dx = as_ * -om
+    dy = bc * om
+    p1 = xo * dy - yo * dx + bc * uOy - as_ * uOx
+    p2 = k.q2 * om
+    V0, V1, V2, V3, V4 = V
+    dx1 = dx * V1
+    dy1 = dy * V1
+    dx2 = dx * V2
+    dy2 = dy * V2
+    Q = p1 * V2 + p2 * V3
+    A0 = V0.sum(0)
+    A1x = dx1.sum(0)
+    A1y = dy1.sum(0)
+    Axx = np.einsum("dn,dn->n", dx, dx2)
+    Axy = np.einsum("dn,dn->n", dx, dy2)
+    Ayy = np.einsum("dn,dn->n", dy, dy2)
+    B = np.einsum("dn,dn->n", p1, V1) + np.einsum("dn,dn->n", p2, V2)
+    Cx = np.einsum("dn,dn->n", dx, Q)
+    Cy = np.einsum("dn,dn->n", dy, Q)
+    Czz = np.einsum("dn,dn->n", p1, Q) + np.einsum("dn,dn->n", p2, p1 * V3 + p2 * V4)
+    kf = k.ab * k.eta_t / k.hh * k.c1_coef * k.eta_t
+    J = res[4:].reshape(3, 3, k.n)
+    J[0, 0] = (uOx * uOx * A0 + 2.0 * uOx * A1x + Axx) * kf + S0
+    J[1, 1] = (uOy * uOy * A0 + 2.0 * uOy * A1y + Ayy) * kf + S0
+    J[0, 1] = (uOx * uOy * A0 + uOx * A1y + uOy * A1x + Axy) * kf
+    J[0, 2] = (uOx * B + Cx) * kf - (yo * S0 + Sy)
+    J[1, 2] = (uOy * B + Cy) * kf + (xo * S0 + Sx)
+    J[2, 2] = Czz * kf + (xo * xo + yo * yo) * S0 + 2.0 * (xo * Sx + yo * Sy) + Sr
+    J[1, 0] = J[0, 1]
+    J[2, 0] = J[0, 2]
+    J[2, 1] = J[1, 2]

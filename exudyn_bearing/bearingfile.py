@@ -116,9 +116,10 @@ _SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant
              "defect", "waviness", "housing"}
 #: [cage] keys whose values are words, not numbers
 _CAGE_WORDS = {"kind", "guidance"}
-#: [contact_law] keys whose values are words, and those that are true or false
-_LAW_WORDS = {"traction", "hertz_method"}
-_LAW_FLAGS = {"spin_moment", "fast_quadrature", "film_elasticity", "compiled", "rolling_resistance", "thermal_film"}
+#: [contact_law] keys whose values are words, and those that are true or false: from the
+#: ContactLaw's own fields, so a new switch of the law is a key of the file without an edit here
+_LAW_WORDS = {f.name for f in fields(ContactLaw) if f.type == "str"}
+_LAW_FLAGS = {f.name for f in fields(ContactLaw) if f.type in ("bool", "bool | None")}
 _BEARING_KEYS = {"balls", "ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity",
                  "inner_groove_radius", "outer_groove_radius", "contact_angle", "diametral_clearance",
                  "ball_mass"}

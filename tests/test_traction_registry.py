@@ -96,7 +96,7 @@ def test_a_registered_law_runs_on_the_numpy_path_and_says_so_once(viscous):
 
 
 def test_the_compiled_path_covers_exactly_the_laws_with_a_kernel():
-    from exudyn_bearing.model.compiled import supports, uncompiled_part
+    from exudyn_bearing.model.coverage import supports, uncompiled_part
 
     assert supports(ContactLaw()) and supports(ContactLaw(traction="none"))
     assert uncompiled_part(ContactLaw(traction="coulomb")) == "traction 'coulomb'"

@@ -235,33 +235,13 @@ def _ray_sums(geo, d, a0, lam, tlc, ir, rho_tab, w_tab, scratch, el):
 
 
 @njit(cache=True, error_model="numpy")
-def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
-    """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
-    :func:`contact.traction_fast._fast_crook`, whose steps this follows one contact at a time).
-
-    Parameters
-    ----------
-    ux, uy, om : float
-        Slip (race − ball) along and across the rolling direction, m/s, and spin, rad/s.
-    a, b, pm, hh : float
-        Hertz semi-axes across and along the rolling direction (m), p_max (Pa), film h (m).
-    ent : float
-        Signed entrainment speed, m/s (the film's elastic compliance, §6b).
-    law : LawRecord
-        η0, c_ηP, c_ηT/(8 K_c), the limiting shear Λ (§6a; 0: none) and κ = G/p (§6b; 0: none).
-    tables : CrookTables
-    """
-    eta_t, c_p, c1_coef, lam_s, kap_e = law.eta0, law.c_p, law.c1_coef, law.limiting_shear, law.film_modulus
-    cos_tab, sin_tab, wpsi_tab = tables.cos_psi, tables.sin_psi, tables.wpsi
-    rho32, w32, rho64, w64 = tables.rho32, tables.w32, tables.rho64, tables.w64
-    lo = min(a, b)
-    if not lo > 0.0:
-        return 0.0, 0.0, 0.0, 0.0
+def _pole_rule(ux, uy, om, a, b, lo, lam, cth):
+    """The spin pole and the rule of one contact (as :func:`contact.traction_fast._fast_pole`):
+    (angular table column, radial table column, first main breakpoint θ0, ray origin X, Y
+    and 1 − |O|², slip at the origin u_Ox, u_Oy)."""
     hi = max(a, b)
     a_long = a >= b
     ab = a * b
-    lam = c_p * pm
-    cth = c1_coef * eta_t
     # spin pole, normalised (X = x/b, Y = y/a)
     Xp = uy / om / (-b)
     Yp = ux / om / a
@@ -310,6 +290,36 @@ def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
         ir = _N_BETA  # rays from the centre
         Xo, Yo, rO = 0.0, 0.0, 1.0
         uOx, uOy = ux, uy
+    return ie, ir, th0, Xo, Yo, rO, uOx, uOy
+
+
+@njit(cache=True, error_model="numpy")
+def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
+    """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
+    :func:`contact.traction_fast._fast_crook`, whose steps this follows one contact at a time).
+
+    Parameters
+    ----------
+    ux, uy, om : float
+        Slip (race − ball) along and across the rolling direction, m/s, and spin, rad/s.
+    a, b, pm, hh : float
+        Hertz semi-axes across and along the rolling direction (m), p_max (Pa), film h (m).
+    ent : float
+        Signed entrainment speed, m/s (the film's elastic compliance, §6b).
+    law : LawRecord
+        η0, c_ηP, c_ηT/(8 K_c), the limiting shear Λ (§6a; 0: none) and κ = G/p (§6b; 0: none).
+    tables : CrookTables
+    """
+    eta_t, c_p, c1_coef, lam_s, kap_e = law.eta0, law.c_p, law.c1_coef, law.limiting_shear, law.film_modulus
+    cos_tab, sin_tab, wpsi_tab = tables.cos_psi, tables.sin_psi, tables.wpsi
+    rho32, w32, rho64, w64 = tables.rho32, tables.w32, tables.rho64, tables.w64
+    lo = min(a, b)
+    if not lo > 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    ab = a * b
+    lam = c_p * pm
+    cth = c1_coef * eta_t
+    ie, ir, th0, Xo, Yo, rO, uOx, uOy = _pole_rule(ux, uy, om, a, b, lo, lam, cth)
     wc = 2.0 * om * cth
     a0 = (uOx * uOx + uOy * uOy) * cth + _PSI_MIN
     w2c = om * om * cth

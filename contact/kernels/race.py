@@ -55,27 +55,22 @@ def rotation_matrices(nu):
 
 
 @njit(cache=True, error_model="numpy")
-def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
-    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
+def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
+    """Kinematics of the contact of ball ``j`` with race ``k`` in state ``ib`` (MODEL.md §2, §6)
+    with the surfaces' stage 0 (:mod:`contact.terms`, §13): (elastic approach δ m, its rate
+    m/s, normal n, rolling direction t1, transverse t2 (3-tuples, global), slips u_x, u_y
+    m/s, spin rad/s, entrainment m/s, rolling rate rad/s, the surface's tilt dh/ds, R_x m)."""
     c, v, w = balls.position, balls.velocity, balls.omega
     ro, rr, rv, rw = frames.origin, frames.rotation, frames.velocity, frames.omega
-    groove, conformity, sign = geometry.groove, geometry.conformity, geometry.sign
-    ball_radius, pitch_diameter, e_prime = geometry.ball_radius, geometry.pitch_diameter, geometry.e_prime
-    damping_ratio, min_film, eta0, c_p, max_barus = law.damping_ratio, law.min_film, law.eta0, law.c_p, law.max_barus
-    force, moment, penetration, load = out.force, out.moment, out.penetration, out.load
-    z = c.shape[1]
+    groove, sign = geometry.groove, geometry.sign
+    ball_radius, pitch_diameter = geometry.ball_radius, geometry.pitch_diameter
     diam = 2.0 * ball_radius
-    p_cap = max_barus / c_p if c_p > 0.0 else np.inf
-    ib = idx // (2 * z)
-    k = (idx // z) % 2
-    j = idx % z
     o = ro[ib, k]
     R = rr[ib, k]
     vo = rv[ib, k]
     wr = rw[ib, k]
     ri, zi, tube = groove[k, 0], groove[k, 1], groove[k, 2]
     sgn = sign[k]
-    f_conf = conformity[k]
     cx, cy, cz = c[ib, j, 0], c[ib, j, 1], c[ib, j, 2]
     rx_, ry_, rz_ = cx - o[0], cy - o[1], cz - o[2]
     # race-frame position (Rᵀ rel) and the groove torus (MODEL.md §2)
@@ -96,7 +91,6 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     height, height_slope = surface_height(terms, k, math.atan2(ly, lx), angle, rho_p, j, r_x)
     if height != 0.0 or height_slope != 0.0:  # (a separate branch: a perfect surface stays bit for bit)
         pen += height
-    penetration[ib, k, j] = pen
     nx = R[0, 0] * nlx + R[0, 1] * nly + R[0, 2] * nlz
     ny = R[1, 0] * nlx + R[1, 1] * nly + R[1, 2] * nlz
     nz = R[2, 0] * nlx + R[2, 1] * nly + R[2, 2] * nlz
@@ -143,9 +137,17 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
             pen += pit
             rate += pit_rate
             tilt += pit_tilt
-            penetration[ib, k, j] = pen
-    # Hertz (Brewe–Hamrock fits, MODEL.md §3) and the damped normal load
-    r_y = f_conf * diam / (2.0 * f_conf - 1.0)
+    rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
+    return (pen, rate, (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z), u_x, u_y, spin, entrainment, rolling_rate,
+            tilt, r_x)
+
+
+@njit(cache=True, error_model="numpy")
+def _normal_load(pen, rate, r_x, conformity, geometry, law):
+    """The damped Hertz load Q (N) of a contact with approach ``pen`` (m), its ``rate`` (m/s)
+    and R_x (m) by the Brewe–Hamrock fits (MODEL.md §3), with (k, E, R, R_y) for its traction."""
+    e_prime, diam = geometry.e_prime, 2.0 * geometry.ball_radius
+    r_y = conformity * diam / (2.0 * conformity - 1.0)
     ratio = max(r_y / r_x, 1.0)
     ell, second = fit_ellipticity(ratio), fit_second_integral(ratio)
     radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
@@ -153,28 +155,60 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     q = 0.0
     if pen > 0.0:
         q = stiff * pen ** 1.5
-        if damping_ratio > 0.0:
-            q += 2.0 * damping_ratio * math.sqrt(1.5 * stiff * math.sqrt(pen) * geometry.ball_mass) * rate
+        if law.damping_ratio > 0.0:
+            q += 2.0 * law.damping_ratio * math.sqrt(1.5 * stiff * math.sqrt(pen) * geometry.ball_mass) * rate
         q = max(q, 0.0)
-    load[ib, k, j] = q
+    return q, ell, second, radius, r_y
+
+
+@njit(cache=True, error_model="numpy")
+def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms):
+    """(f_x, f_y along t1, t2 N, M_z N m, the per-contact terms' force along t1 N and couple
+    about t2 N m) on the ball of a loaded contact: Hamrock–Dowson film (P17) with the terms'
+    film factor, the Crook traction by the fast rule, the terms' stage 2."""
+    ell, second, radius, r_y = hertz
+    u_x, u_y, spin = slip
+    e_prime, ball_radius, eta0, c_p = geometry.e_prime, geometry.ball_radius, law.eta0, law.c_p
+    p_cap = law.max_barus / c_p if c_p > 0.0 else np.inf
+    sa = semi_axis_of(q, ell, second, radius, e_prime, True)
+    sb = semi_axis_of(q, ell, second, radius, e_prime, False)
+    p_max = max_pressure_of(q, sa, sb)
+    h = central_film(entrainment, q, r_x, ell, e_prime, eta0, c_p)  # Hamrock–Dowson (P17), floored below
+    cs = ContactState(q, sa, sb, p_max, h, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
+    phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1
+    h = max(phi_t * h, law.min_film)
+    fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
+    if not law.spin_moment:
+        mz = 0.0
+    f_b, m_r = contact_loads(terms, cs, phi_t)  # stage 2
+    return fx, fy, mz, f_b, m_r
+
+
+@njit(cache=True, error_model="numpy")
+def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
+    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
+    z = balls.position.shape[1]
+    ib = idx // (2 * z)
+    k = (idx // z) % 2
+    j = idx % z
+    pen, rate, normal, t1, t2, u_x, u_y, spin, entrainment, rolling_rate, tilt, r_x = _contact_kinematics(
+        ib, k, j, balls, frames, geometry, terms)
+    out.penetration[ib, k, j] = pen
+    q, ell, second, radius, r_y = _normal_load(pen, rate, r_x, geometry.conformity[k], geometry, law)
+    out.load[ib, k, j] = q
     fx = 0.0
     fy = 0.0
     mz = 0.0
     m_r = 0.0  # rolling-resistance couple about t2, on the ball
     f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if law.traction == 1 and q > 0.0:
-        sa = semi_axis_of(q, ell, second, radius, e_prime, True)
-        sb = semi_axis_of(q, ell, second, radius, e_prime, False)
-        p_max = max_pressure_of(q, sa, sb)
-        h = central_film(entrainment, q, r_x, ell, e_prime, eta0, c_p)  # Hamrock–Dowson (P17), floored below
-        rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
-        cs = ContactState(q, sa, sb, p_max, h, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
-        phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1
-        h = max(phi_t * h, min_film)
-        fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
-        if not law.spin_moment:
-            mz = 0.0
-        f_b, m_r = contact_loads(terms, cs, phi_t)  # stage 2
+        fx, fy, mz, f_b, m_r = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin), entrainment,
+                                                 rolling_rate, geometry, law, tables, terms)
+    nx, ny, nz = normal
+    t1x, t1y, t1z = t1
+    t2x, t2y, t2z = t2
+    ball_radius = geometry.ball_radius
+    force, moment = out.force, out.moment
     Fx = -q * nx + fx * t1x + fy * t2x
     Fy = -q * ny + fx * t1y + fy * t2y
     Fz = -q * nz + fx * t1z + fy * t2z

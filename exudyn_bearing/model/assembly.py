@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..races import NODE_KINEMATICS, move_body, node_state
-from ..solvers.quasistatic import _rotation
+from ..solvers.geometric import rotation as _rotation
 from ..solvers.shaft import ShaftEquilibrium, solve_shaft
 
 __all__ = ["SettleShaft"]

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import threading
-import warnings
 from pathlib import Path
 from typing import NamedTuple
 
@@ -40,48 +39,9 @@ def _announce_compilation():
     if len(cached) < 2:
         print("exudyn-bearing: compiling the contact kernels (once, about 20-60 s; cached afterwards)",
               file=sys.stderr, flush=True)
-from contact.traction_laws import traction_model
-from ..errors import NumpyPathWarning
+from .coverage import say_numpy_path, supports, uncompiled_part  # noqa: F401 (the compiled path's coverage)
 
-__all__ = ["CompiledForces", "supports", "uncompiled_part"]
-
-#: how much slower a force evaluation is on the numpy path (ContactLaw.compiled; the
-#: reference bearing's right-hand side, benchmarks/speed.py)
-NUMPY_PATH_COST = "about 4x"
-_SAID = set()  # the laws NumpyPathWarning has named in this process
-
-
-def uncompiled_part(law) -> str | None:
-    """What of this :class:`contact.ballrace.ContactLaw` the compiled kernels do not compute
-    (None: they compute all of it): they cover the registered traction laws with a kernel
-    (:data:`contact.traction_laws.TRACTION_LAWS`; Crook laws by the fast rule) and the
-    Brewe–Hamrock Hertz fits."""
-    model = traction_model(law.traction)
-    if model.kernel is None:
-        return f"traction {law.traction!r}"
-    if model.crook and not law.fast_quadrature:
-        return f"traction {law.traction!r} by the accurate rule (fast_quadrature=False)"
-    if law.hertz_method != "fit":
-        return f"hertz_method {law.hertz_method!r}"
-    return None
-
-
-def supports(law) -> bool:
-    """Whether the compiled path computes this :class:`contact.ballrace.ContactLaw`
-    (:func:`uncompiled_part`); other laws use the numpy path."""
-    return uncompiled_part(law) is None
-
-
-def say_numpy_path(law) -> None:
-    """A :class:`~exudyn_bearing.errors.NumpyPathWarning` naming what of ``law`` has no
-    compiled form and the cost, once per law and process."""
-    part = uncompiled_part(law)
-    if part is not None and part not in _SAID:
-        _SAID.add(part)
-        warnings.warn(f"{part} has no compiled form: the contacts are evaluated by the numpy functions, "
-                      f"{NUMPY_PATH_COST} slower per force evaluation (ContactLaw(compiled=False) chooses that "
-                      "path without this warning)", NumpyPathWarning, stacklevel=4)
-
+__all__ = ["CompiledForces", "supports", "uncompiled_part", "say_numpy_path"]
 
 @njit(cache=True, error_model="numpy")
 def _race_frames(pos, rot, vel, omega, mount, fixed_omega, frames):

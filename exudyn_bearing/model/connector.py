@@ -19,6 +19,7 @@ from ..cage import CageModel
 from ..contact_records import contact_records
 from ..jacobian import block_jacobian
 from ..races import Race
+from .coverage import say_numpy_path, supports
 from .diagnostics import ConnectorDiagnostics
 from .state import ConnectorState, both_races, first_state, per_race, stacked
 
@@ -117,15 +118,15 @@ class BearingConnector(ConnectorDiagnostics):
         self._land_kernel = None
         self._rotations = rotation_matrices
         if law.compiled:
-            from . import compiled
+            if supports(law):
+                from . import compiled
 
-            if compiled.supports(law):
                 self._compiled = compiled.CompiledForces(self)
                 self._rotations = compiled.kernels.rotation_matrices
                 self._land_kernel = compiled.kernels.land_forces
                 self._frame_rows = (self.origin[None].copy(), np.zeros((1, 3)), self.axis[None].copy())
             else:
-                compiled.say_numpy_path(law)
+                say_numpy_path(law)
 
     # -- state of a race frame ---------------------------------------------------------
     def _race_frame(self, name, t, pos, vel, rot, omega):

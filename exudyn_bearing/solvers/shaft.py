@@ -22,7 +22,8 @@ import numpy as np
 
 from ..bearing import Bearing
 from ..jacobian import central_jacobian
-from .quasistatic import QuasiStaticError, _rotation, solve_load_distribution
+from .geometric import rotation as _rotation
+from .quasistatic import QuasiStaticError, solve_load_distribution
 
 __all__ = ["ShaftBearing", "ShaftEquilibrium", "solve_shaft"]
 
