@@ -35,7 +35,7 @@ from .ball_surface import ball_height
 from .surface import NO_SURFACE, SurfaceRecord, race_height
 from .thermal_film import film_factor as thermal_film_factor
 
-__all__ = ["TermRecord", "ContactState", "Term", "TERMS", "register_term", "term_record", "surface_height",
+__all__ = ["TermRecord", "ContactState", "Term", "TERMS", "register_term", "applied_terms", "term_record", "surface_height",
            "ball_surface_height", "film_factor", "contact_loads", "contact_terms", "surface_terms", "plain_terms",
            "terms_from_plain", "no_film_factor", "no_contact_loads"]
 
@@ -105,6 +105,12 @@ def register_term(name: str, term: Term, applies=None) -> None:
     TERMS[name] = (term, applies)
 
 
+def applied_terms(law) -> tuple:
+    """(name, :class:`Term`) of the registered terms that apply to the contact ``law``."""
+    return tuple((name, term) for name, (term, applies) in TERMS.items()
+                 if law.crook and (applies is None or applies(law)))
+
+
 def _registered_film(registered, cs, phi):
     """phi times the registered terms' film factors (compiled through the overload below)."""
     raise NotImplementedError
@@ -165,7 +171,7 @@ def term_record(law, lubricant, ball_diameter, surface: SurfaceRecord = NO_SURFA
     the bearing's ``surface`` (:func:`contact.surface.surface_record`)."""
     crook = law.crook
     heating = lubricant.shear_heating
-    registered = tuple(term for term, applies in TERMS.values() if crook and (applies is None or applies(law)))
+    registered = tuple(term for _name, term in applied_terms(law))
     return TermRecord(surface, heating=heating if (crook and law.thermal_film) else 0.0,
                       rolling_width=float(ball_diameter) if (crook and law.rolling_resistance) else 0.0,
                       registered=registered)

@@ -103,3 +103,28 @@ def test_a_run_with_the_toy_term_has_the_thinner_film(toy):
         TERMS[NAME] = term
     films = [np.mean(r.results.inner["film"][-1]) for r in (run, base)]
     assert films[0] / films[1] == pytest.approx(FACTOR, rel=0.03)
+
+
+def test_the_toy_term_is_in_the_inputs_record_and_reaches_the_skid_maps_workers(toy, monkeypatch):
+    """A result file names the registered term (without the process's addresses, so a resume
+    compares like with like), and a skid-map point carries it to a worker, which registers it
+    again where its process lacks it."""
+    from exudyn_bearing import BearingSetup, REFERENCE_BEARING
+    from exudyn_bearing.results.records import setup_inputs
+    from exudyn_bearing.studies import skidmap
+
+    setup = BearingSetup(REFERENCE_BEARING)
+    record = setup_inputs(setup)["registered_terms"]
+    assert NAME in record and "constant_film" in record and "0x" not in record
+    term, applies = TERMS.pop(NAME)
+    try:
+        assert "registered_terms" not in setup_inputs(setup)  # a term-free run reads as before
+        point = skidmap.SkidPoint(1300.0, 0.0, 1800.0, 0.002)
+        done = skidmap._run_point((point, setup, ((NAME, term),)))  # a worker without the term
+        assert done["error"] is None and NAME in TERMS
+    finally:
+        TERMS[NAME] = (term, applies)
+    jobs = []
+    monkeypatch.setattr(skidmap, "_run_point", lambda job: jobs.append(job) or skidmap.asdict(job[0]))
+    skidmap.skid_map(setup, axial_force=(1300.0,), rpm=(1800.0,), time=0.002, workers=1, refine=False, progress=None)
+    assert jobs and jobs[0][2] == ((NAME, TERMS[NAME][0]),)

@@ -16,11 +16,17 @@ Everything is in one global frame and SI units.
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
-# (No kernel runs a numba parallel loop: a Jacobian's contacts are shared over Python threads
-# by race.race_contacts_parallel, so no OpenMP runtime spins while it waits for work. Until
-# session 28 this module set GOMP_SPINCOUNT=3000 against that spinning, DEVELOPMENT.md.)
+# GNU OpenMP threads (numba's parallel layer) spin ~300 000 times while they wait for work;
+# when other processes share the cores (a skid map, a second run) the spinning threads take
+# their CPU. Two runs side by side on 2 cores, 0.02 s simulated each: 10.5-11.7 s with that
+# default, 1.9-2.0 s with a spin count of 3000 (alone: 1.30 vs 1.2 s). Must be set before the
+# OpenMP runtime loads; a user's own OMP_WAIT_POLICY or GOMP_SPINCOUNT wins.
+if "OMP_WAIT_POLICY" not in os.environ:
+    os.environ.setdefault("GOMP_SPINCOUNT", "3000")
+
 from ..kernel_cache import drop_stale  # noqa: E402
 
 # the kernels call and inline functions of other modules (contact/*.py, this package): numba's

@@ -6,19 +6,19 @@ Hamrock–Dowson film (§5, P17) by the same scalar laws the numpy path applies
 (:mod:`contact.hertz`, :mod:`contact.film`), the damped normal load, the Crook traction by the fast rule
 (:func:`contact.kernels.crook.crook_one`) and the per-contact terms of :mod:`contact.terms`;
 force and moment on the ball as :func:`contact.ballrace.ball_race_forces`.
-:func:`race_contacts_parallel` spreads the contacts over threads (the kernel runs without the GIL).
+:func:`race_contacts_parallel` spreads the contacts over numba's threads.
 """
 from __future__ import annotations
 
 import math
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from numba import get_num_threads, njit
+from numba import njit, prange
 
 from ..film import central_film
 from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
-from ..terms import ContactState, ball_surface_height, contact_loads, film_factor, surface_height
+from ..surface import SurfaceRecord
+from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
 from .crook import crook_one
 
 __all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
@@ -54,7 +54,7 @@ def rotation_matrices(nu):
 
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
     """Kinematics of the contact of ball ``j`` with race ``k`` in state ``ib`` (MODEL.md §2, §6)
     with the surfaces' stage 0 (:mod:`contact.terms`, §13): (elastic approach δ m, its rate
@@ -142,7 +142,7 @@ def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
             tilt, r_x)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _normal_load(pen, rate, r_x, conformity, geometry, law):
     """The damped Hertz load Q (N) of a contact with approach ``pen`` (m), its ``rate`` (m/s)
     and R_x (m) by the Brewe–Hamrock fits (MODEL.md §3), with (k, E, R, R_y) for its traction."""
@@ -161,7 +161,7 @@ def _normal_load(pen, rate, r_x, conformity, geometry, law):
     return q, ell, second, radius, r_y
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms):
     """(f_x, f_y along t1, t2 N, M_z N m, the per-contact terms' force along t1 N and couple
     about t2 N m) on the ball of a loaded contact: Hamrock–Dowson film (P17) with the terms'
@@ -258,37 +258,48 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
         _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
 
 
-@njit(cache=True, error_model="numpy", nogil=True)
+@njit(cache=True, error_model="numpy")
 def race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo):
     """:func:`race_contacts` for the flat contact indices ``todo`` only (state idx // 2Z, race
-    idx // Z % 2, ball idx % Z; int64), without the GIL: the rest of the outputs is left as it
-    is (a Jacobian's race columns change one race's contacts only)."""
+    idx // Z % 2, ball idx % Z; int64): the rest of the outputs is left as it is (a Jacobian's
+    race columns change one race's contacts only)."""
     for n in range(todo.shape[0]):
         _race_contact(todo[n], balls, frames, geometry, law, tables, terms, out)
 
 
-_POOL = []  # the worker threads of race_contacts_parallel, started on first use
+#: the surface record's fields come first in the terms' flat tuple (:func:`_flat_terms`)
+_N_SURFACE = len(SurfaceRecord._fields)
+# the flat tuple leaves out the last field, the registered terms (functions); a new field
+# therefore goes before it (TermRecord's docstring)
+assert TermRecord._fields[-1] == "registered"
+
+
+def _flat_terms(terms):
+    """``terms`` but its registered ones as one flat tuple — the surface's arrays, then the
+    scalar fields, by position — for numba's parallel loop, which takes tuples of arrays and
+    numbers but not a record inside a record."""
+    return (*terms.surface, *terms[1:-1])
+
+
+@njit(cache=True, error_model="numpy")
+def _race_contact_flat(idx, balls, frames, geometry, law, tables, flat, out):
+    terms = TermRecord(SurfaceRecord(*flat[:_N_SURFACE]), *flat[_N_SURFACE:], ())
+    _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def _race_contacts_prange(balls, frames, geometry, law, tables, flat, out, todo):
+    for n in prange(todo.shape[0]):
+        _race_contact_flat(todo[n], balls, frames, geometry, law, tables, flat, out)
 
 
 def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, todo):
-    """:func:`race_contacts_at` with the contacts ``todo`` split over numba's thread count
-    (``numba.get_num_threads()``), one share on the calling thread.
+    """:func:`race_contacts_at` with the contacts ``todo`` spread over numba's threads.
 
-    The records pass unchanged to every share: numba's ``prange`` cannot take a record that
-    holds a record of arrays (the terms' surface), so a parallel loop would have to rebuild
-    the terms field by field — and a forgotten field would silently take its default there.
-    """
-    threads = get_num_threads()
-    if threads < 2 or todo.shape[0] < 2 * threads:
+    The terms cross numba's parallel loop as one flat tuple rebuilt per contact by position
+    (:func:`_flat_terms`), never field by field, so no field can be left at its default
+    there; registered terms (functions, which cannot cross it) run serially."""
+    if len(terms.registered) > 0:
         race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo)
         return
-    if not _POOL or _POOL[0][0] < threads - 1:
-        if _POOL:
-            _POOL.pop()[1].shutdown(wait=False)
-        _POOL.append((threads - 1, ThreadPoolExecutor(threads - 1, thread_name_prefix="race-contacts")))
-    shares = np.array_split(todo, threads)
-    pending = [_POOL[0][1].submit(race_contacts_at, balls, frames, geometry, law, tables, terms, out, share)
-               for share in shares[1:]]
-    race_contacts_at(balls, frames, geometry, law, tables, terms, out, shares[0])
-    for job in pending:
-        job.result()
+    _race_contacts_prange(balls, frames, geometry, law, tables, _flat_terms(terms), out, todo)

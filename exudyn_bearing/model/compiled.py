@@ -428,8 +428,9 @@ class CompiledForces:
         ph = self.physics
         args = (balls, frames, ph.geometry, ph.law, ph.tables, ph.terms,
                 kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
-        # contacts shared out over threads from the main thread; a threaded caller (a Dask
-        # worker thread, whose process already runs a job per core) runs them serially
+        # contacts spread over numba's threads from the main thread; a threaded caller (a
+        # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
+        # OpenMP is missing, serves one caller at a time)
         if bsz == 1 or threading.current_thread() is not threading.main_thread():
             kernels.race_contacts(*args)
             return w

@@ -65,13 +65,26 @@ def inputs_record(bearing, **inputs) -> dict:
     return {"bearing": repr(bearing)} | {k: repr(v) for k, v in inputs.items()} | {"version": package}
 
 
+def _function_name(function) -> str:
+    """module.name of a (numba-compiled) function, without the process's addresses."""
+    f = getattr(function, "py_func", function)
+    return f"{getattr(f, '__module__', '?')}.{getattr(f, '__qualname__', repr(f))}"
+
+
 def setup_inputs(setup, **settings) -> dict:
     """:func:`inputs_record` of a :class:`~exudyn_bearing.setup.BearingSetup` and ``settings``:
     every part, the surfaces and housing where the setup has them (a perfect bearing on a
     fixed outer race is recorded as before they existed)."""
+    from contact.terms import applied_terms
+
     extra = {"surface": setup.surface} if setup.surface.active else {}
     if setup.housing is not None:
         extra["housing"] = setup.housing
+    registered = applied_terms(setup.contact_law)  # (contact.terms.register_term; none: not recorded)
+    if registered:
+        extra["registered_terms"] = [f"{name}: {_function_name(term.film_factor)}, "
+                                     f"{_function_name(term.contact_loads)}, parameter {term.parameter!r}"
+                                     for name, term in registered]
     return inputs_record(setup.bearing, lubricant=setup.lubricant, drag=setup.drag, contact_law=setup.contact_law,
                          cage=setup.cage, **extra, **settings)
 

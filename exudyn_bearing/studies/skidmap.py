@@ -13,6 +13,7 @@ import json
 import math
 import multiprocessing
 import os
+import pickle
 import time as _time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field, replace
@@ -22,6 +23,7 @@ import numpy as np
 
 from contact.ballrace import ContactLaw
 from contact.lubricant import Lubricant
+from contact.terms import TERMS, applied_terms, register_term
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import as_setup
 from ..cage import CageModel
@@ -90,10 +92,14 @@ class SkidPoint:
 
 def _run_point(args) -> dict:
     """Worker: one dynamic run; never raises (errors are reported in the point)."""
-    point, setup = args
+    point, setup, registered = args
     start = _time.perf_counter()
     try:
         from ..simulation.runner import SolverSettings, simulate
+
+        for name, term in registered:  # (a worker process: the terms its parent registered)
+            if name not in TERMS:
+                register_term(name, term)
 
         # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
         # (each run from scratch: at most twice the cost of the final one)
@@ -372,7 +378,16 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     if progress and done:
         progress(f"resuming: {len(result.points)} of {len(grid)} points already in {journal}")
     start = _time.perf_counter()
-    jobs = [(p, setup) for p in todo]
+    # the terms registered in this process (contact.terms.register_term) go with every point:
+    # a worker process registers them again
+    registered = applied_terms(setup.contact_law)
+    if registered and (client is not None or (workers or os.cpu_count() or 1) > 1):
+        try:
+            pickle.dumps(registered)
+        except Exception as err:  # noqa: BLE001 - any pickling failure
+            raise ValueError(f"registered terms {[n for n, _ in registered]}: the skid map's worker processes need "
+                             f"them picklable (numba functions at a module's top level): {err}") from None
+    jobs = [(p, setup, registered) for p in todo]
 
     def record(data):
         point = SkidPoint(**data)
