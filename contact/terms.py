@@ -46,10 +46,11 @@ THERMAL_FLOOR = 0.05
 class TermRecord(NamedTuple):
     """Parameters of the per-contact terms; a term whose parameter is 0 is off.
 
-    The one record field (``surface``) comes first, the scalar parameters after it: so the
-    record crosses into compiled code as a plain tuple and back without naming its fields
-    (:func:`plain_terms`, :func:`terms_from_plain`), and a new term is one more field here
-    (with its default) and its value in :func:`term_record`.
+    The one record field (``surface``) comes first, the scalar parameters after it and the
+    registered terms last: so the record crosses into compiled code as a plain tuple (and
+    numba's parallel loop as a flat one, :mod:`contact.kernels.race`) and back without naming
+    its fields (:func:`plain_terms`, :func:`terms_from_plain`), and a new term is one more
+    field here, before ``registered``, with its default, and its value in :func:`term_record`.
     """
 
     surface: SurfaceRecord  #: defects, waviness, ball sizes (MODEL.md §13); empty arrays: off
