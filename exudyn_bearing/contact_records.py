@@ -16,11 +16,11 @@ from typing import NamedTuple
 import numpy as np
 
 from contact.ballrace import ContactLaw, RaceContact
-from contact.kernels.records import LawRecord, RaceGeometry, law_record
+from contact.kernels.records import CageRecord, LawRecord, RaceGeometry, law_record
 from contact.surface import NO_SURFACE, SurfaceRecord
 from contact.terms import TermRecord, term_record
 
-__all__ = ["ContactRecords", "contact_records"]
+__all__ = ["ContactRecords", "contact_records", "cage_record"]
 
 
 class ContactRecords(NamedTuple):
@@ -57,3 +57,23 @@ def contact_records(bearing, lubricant, law: ContactLaw, balls: int | None = Non
                             float(bearing.effective_modulus), float(bearing.ball_mass))
     return ContactRecords(tube, grooves, signs, races, term_record(law, lubricant, d, surface), geometry,
                           law_record(law, lubricant))
+
+
+#: CageModel.kind -> CageRecord.kind
+CAGE_KINDS = {"none": 0, "rigid": 1, "spring-chain": 2}
+
+
+def cage_record(setup, axis, origin) -> CageRecord:
+    """The compiled path's :class:`~contact.kernels.records.CageRecord` of ``setup``'s cage and
+    ball drag in a bearing frame with ``axis`` (3,) and ``origin`` (3,) m (MODEL.md §1, §8):
+    pockets evenly spaced from azimuth 0, the drag's factor 1/2 C_D φ ρ π r² (kg/m; 0: none),
+    the pocket damping of :meth:`~exudyn_bearing.cage.CageModel.damping_for`."""
+    bearing, cage, drag = setup.bearing, setup.cage, setup.drag
+    drag_factor = 0.0
+    if drag is not None and drag.drag_coefficient * drag.oil_volume_fraction > 0:
+        drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * setup.lubricant.density * np.pi
+                       * bearing.ball_radius ** 2)
+    pockets = 2 * np.pi * np.arange(bearing.balls) / bearing.balls
+    return CageRecord(CAGE_KINDS[cage.kind], pockets, float(bearing.pitch_radius), float(cage.clearance),
+                      float(cage.stiffness), float(cage.damping_for(bearing.ball_mass)), axis, origin,
+                      float(drag_factor))

@@ -298,7 +298,7 @@ class CompiledForces:
 
     def __init__(self, connector):
         con = connector
-        b, law, lub = con.bearing, con.law, con.lubricant
+        b, law = con.bearing, con.law
         self.con = con
         self.balls = np.asarray(con.layout["balls"], dtype=np.int64)
         self.slots = np.array([-1 if con.layout[k] is None else con.layout[k] for k in ("inner", "outer")],
@@ -308,17 +308,9 @@ class CompiledForces:
         for k, name in enumerate(("inner", "outer")):
             if name in con.race_frames:
                 self.local_pos[k], self.local_rot[k] = con.race_frames[name]
-        cage_kind = {"none": 0, "rigid": 1, "spring-chain": 2}[con.cage.kind]
-        self.cage_kind = cage_kind
+        cage = con.cage_record
+        self.cage_kind = cage_kind = cage.kind
         self.cage_slot = con.layout["cage"] if cage_kind == 1 else -1
-        drag = con.drag
-        drag_factor = 0.0
-        if drag is not None and drag.drag_coefficient * drag.oil_volume_fraction > 0:
-            drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * lub.density * np.pi
-                           * b.ball_radius ** 2)
-        cage = kernels.CageRecord(cage_kind, con.pocket_angles, float(b.pitch_radius), float(con.cage.clearance),
-                                  float(con.cage.stiffness), float(con.cage_damping), con.axis, con.origin,
-                                  float(drag_factor))
         # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
         pocket = (float(con.cage.pocket_friction) if cage_kind == 1 else 0.0, float(con.cage.pocket_slip_scale))
         guide = Guide(-1, 0.0, 0.0, 0.0, 0.0)

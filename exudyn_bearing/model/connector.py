@@ -16,7 +16,7 @@ from contact.ballrace import ball_race_forces, with_surface
 from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
 from contact.surface import surface_record
 from ..cage import CageModel
-from ..contact_records import contact_records
+from ..contact_records import cage_record, contact_records
 from ..jacobian import block_jacobian
 from ..races import Race
 from .coverage import say_numpy_path, supports
@@ -94,8 +94,9 @@ class BearingConnector(ConnectorDiagnostics):
                                if s is not None)
         # inner contacts first, then outer: one vectorized evaluation for all 2 Z contacts
         self.groove_all, self.signs, self.params = self.records.grooves, self.records.signs, self.records.races
-        self.pocket_angles = 2 * np.pi * np.arange(self.z) / self.z
-        self.cage_damping = cage.damping_for(bearing.ball_mass)
+        #: the cage and drag as both paths read them (:func:`exudyn_bearing.contact_records.cage_record`)
+        self.cage_record = cage_record(setup, self.axis, self.origin)
+        self.pocket_angles, self.cage_damping = self.cage_record.pocket_angles, self.cage_record.damping
         # (race, radial play m, stiffness N/m, damping N s/m, friction constant N m s) of a
         # land-guided cage; the constant 2 pi eta0 R³ L / c of its land friction (MODEL.md §11d)
         self.guide = None
