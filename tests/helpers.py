@@ -109,6 +109,39 @@ def _both_paths(con, q, qt, t=0.01):
 
 
 # (from tests/test_traction.py)
+def _jacobian_paths(con, q, qt, t=0.01):
+    """(compiled Jacobian from the main thread, from a worker thread, numpy path's Jacobian)
+    of one state: the compiled batch path (numba's parallel loop) and its serial twin, and
+    the reference."""
+    import threading
+
+    main = con.jacobian(t, q, qt, 1.0, 1e-4)
+    box = {}
+    worker = threading.Thread(target=lambda: box.setdefault("j", con.jacobian(t, q, qt, 1.0, 1e-4)))
+    worker.start()
+    worker.join()
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = con.jacobian(t, q, qt, 1.0, 1e-4)
+    finally:
+        con._compiled = kernel
+    return main, box["j"], ref
+
+
+def _assert_jacobian_matches_numpy(fast, ref, con):
+    """The compiled Jacobian ``fast`` equals the numpy one ``ref`` to finite-difference noise:
+    2e-4 of the largest entry, 1e-3 in the races' translation columns that the compiled path
+    takes from the balls' (tests/test_compiled.py explains both)."""
+    from exudyn_bearing.jacobian import jacobian_columns
+
+    chain = np.zeros(ref.shape[1], dtype=bool)
+    for s in jacobian_columns(con)["chain"]:
+        chain[6 * s:6 * s + 3] = True
+    scale = np.max(np.abs(ref))
+    assert np.max(np.abs(fast - ref)[:, ~chain]) < 2e-4 * scale
+    assert np.max(np.abs(fast - ref)[:, chain], initial=0.0) < 1e-3 * scale
+
+
 def _scipy_reference(ux, uy, w, a, b, p_max, h, lub=REF, eps=1e-6, lam=None, limit=10000):
     """∬ (τ_x, τ_y, x τ_y − y τ_x, τ·u) dA by nested adaptive quadrature (scipy quad_vec),
     both levels split at the spin pole lines x = x_p, y = y_p (MODEL.md §8); with ``lam`` the

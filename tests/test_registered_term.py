@@ -9,8 +9,6 @@ in the fast one.
 """
 from __future__ import annotations
 
-import threading
-
 import numpy as np
 import pytest
 
@@ -20,7 +18,7 @@ numba = pytest.importorskip("numba")
 from contact.ballrace import ContactLaw  # noqa: E402
 from contact.terms import TERMS, Term, register_term  # noqa: E402
 from exudyn_bearing import simulate  # noqa: E402
-from tests.helpers import _both_paths, _scene  # noqa: E402
+from tests.helpers import _assert_jacobian_matches_numpy, _both_paths, _jacobian_paths, _scene  # noqa: E402
 
 pytestmark = pytest.mark.slow
 
@@ -75,18 +73,9 @@ def test_the_toy_term_reaches_both_force_paths(toy):
 
 def test_the_toy_term_reaches_both_jacobian_paths(toy):
     (_sc, con, q, qt), (_s, plain, _p, _pt) = toy
-    main = con.jacobian(0.01, q, qt, 1.0, 1e-4)
-    box = {}
-    worker = threading.Thread(target=lambda: box.setdefault("j", con.jacobian(0.01, q, qt, 1.0, 1e-4)))
-    worker.start()
-    worker.join()
-    np.testing.assert_allclose(box["j"], main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
-    kernel, con._compiled = con._compiled, None
-    try:
-        ref = con.jacobian(0.01, q, qt, 1.0, 1e-4)
-    finally:
-        con._compiled = kernel
-    assert np.max(np.abs(main - ref)) < 1e-3 * np.max(np.abs(ref))
+    main, serial, ref = _jacobian_paths(con, q, qt)
+    np.testing.assert_allclose(serial, main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
+    _assert_jacobian_matches_numpy(main, ref, con)
     assert np.max(np.abs(main - plain.jacobian(0.01, q, qt, 1.0, 1e-4))) > 1e-6 * np.max(np.abs(ref))
 
 
