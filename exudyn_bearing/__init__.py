@@ -20,7 +20,8 @@ from .bearingfile import BearingFile, as_setup, dumps_bearing, load_bearing, loa
 from .setup import BearingSetup
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
-from .errors import BearingSimulationError, NumpyPathWarning, QuasiStaticError, TractionCoefficientWarning
+from .errors import (BearingSimulationError, NumpyPathWarning, QuasiStaticError, SurfaceStartWarning,
+                     TractionCoefficientWarning)
 from .model.assembly import SettleShaft
 from .model.builder import BearingHandle, CreateAngularContactBearing
 from .presets import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
@@ -54,6 +55,7 @@ __all__ = [
     # skid criteria
     "gyroscopic_minimum_axial", "hirano_minimum_axial",
     # errors and warnings
-    "BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "TractionCoefficientWarning",
+    "BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "SurfaceStartWarning",
+    "TractionCoefficientWarning",
     "__version__",
 ]

@@ -1,6 +1,13 @@
-"""The package's errors and warnings, in one place (docs/ARCHITECTURE.md)."""
+"""The package's errors and warnings, in one place (docs/ARCHITECTURE.md).
 
-__all__ = ["BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "TractionCoefficientWarning"]
+The package's warnings print as one line, ``exudyn-bearing: <Category>: <message>``, without
+Python's file, line number and source line: they speak of the bearing, not of where in the
+package they were raised (:func:`one_line`, installed on import).
+"""
+import warnings
+
+__all__ = ["BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "SurfaceStartWarning",
+           "TractionCoefficientWarning"]
 
 
 class BearingSimulationError(RuntimeError):
@@ -21,3 +28,23 @@ class NumpyPathWarning(UserWarning):
     """A contact law has no compiled form: its contacts are evaluated by the numpy functions
     of :mod:`contact` (the same physics, several times slower per force evaluation). Said
     once per law and process; ``ContactLaw(compiled=False)`` chooses that path silently."""
+
+
+class SurfaceStartWarning(UserWarning):
+    """The start with surfaces (MODEL.md §13d) could not carry the perfect start's forces: what
+    is left and where (``handle.connector.surface_start``)."""
+
+
+#: the package's warnings, printed in one line
+ONE_LINE = (NumpyPathWarning, SurfaceStartWarning, TractionCoefficientWarning)
+_FORMAT = warnings.formatwarning
+
+
+def one_line(message, category, filename, lineno, line=None):
+    """``warnings.formatwarning`` with the package's warnings in one line, the others as before."""
+    if isinstance(category, type) and issubclass(category, ONE_LINE):
+        return f"exudyn-bearing: {category.__name__}: {message}\n"
+    return _FORMAT(message, category, filename, lineno, line)
+
+
+warnings.formatwarning = one_line

@@ -26,6 +26,7 @@ from contact.lubricant import Lubricant
 from contact.surface import SurfaceModel, surface_record
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import as_setup
+from ..errors import SurfaceStartWarning
 from ..setup import FROM_SETUP, BearingSetup
 from ..presets import REFERENCE_BEARING
 from ..races import Race, move_body
@@ -59,8 +60,8 @@ def _ball_circles(frame, start):
 def _settle_surfaces(mbs, connector, nodes, layout, inner, held):
     """Moves the balls (and an inner race the builder made, free in translation) so that the
     surfaces at t = 0 carry the perfect start's forces (:func:`surface_start`); the outcome is
-    ``connector.surface_start``, and a start that does not converge warns and keeps the
-    perfect bearing's state."""
+    ``connector.surface_start``; one that leaves forces unbalanced says so in a
+    SurfaceStartWarning."""
     init = [np.asarray(mbs.GetNodeParameter(n, "initialCoordinates"), dtype=float) for n in nodes]
     vel = [np.asarray(mbs.GetNodeParameter(n, "initialVelocities"), dtype=float) for n in nodes]
     q = connector.reference + np.concatenate(init)
@@ -79,7 +80,7 @@ def _settle_surfaces(mbs, connector, nodes, layout, inner, held):
         mbs.SetNodeParameter(nodes[slot], "initialCoordinates", start.tolist())
     connector.surface_start = info
     if not info["converged"]:
-        warnings.warn(info["message"], stacklevel=3)
+        warnings.warn(info["message"], SurfaceStartWarning, stacklevel=3)
 
 
 def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REFERENCE_BEARING,

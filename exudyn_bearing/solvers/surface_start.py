@@ -11,6 +11,12 @@ are moved by u so that the connector's generalized forces on them along those di
 with the surfaces equal those of the perfect start: P F_s(q + Pᵀ u) = P F_0(q), solved by
 Newton with a finite-difference Jacobian of the numpy force path (all columns in one batched
 call). Velocities are kept.
+
+Where that balance does not exist — a ball over a defect deeper than its approach sinks into
+it and cannot keep both contacts' loads with its two directions, the inner race being shared
+by all balls — the iterate with the smallest force left is kept (the least-squares start) and
+the message names the body that holds it; only a start that leaves more force than the
+perfect state falls back to that state.
 """
 from __future__ import annotations
 
@@ -27,7 +33,8 @@ MAX_MOVE = 2e-6
 
 class SurfaceStart(dict):
     """What :func:`surface_start` did: ``moves`` (slot -> (3,) m, global), ``iterations``,
-    ``residual_N`` (largest force left along the moved directions), ``converged``, ``message``."""
+    ``residual_N`` (largest force left along the moved directions), ``converged``, ``placed``
+    (not converged, but the least-squares placement kept), ``message``."""
 
 
 def surface_start(con, q, q_t, moves, tolerance=1e-3, max_iter=30) -> tuple:
@@ -44,13 +51,19 @@ def surface_start(con, q, q_t, moves, tolerance=1e-3, max_iter=30) -> tuple:
             basis[i, 6 * s:6 * s + 3] = d
             i += 1
     target = basis @ con.numpy_forces(0.0, q[None], q_t[None], surface=False)[0]
+    owner = np.repeat(slots, [len(np.atleast_2d(d)) for _, d in moves])  # the slot of each unknown
     u = np.zeros(len(basis))
+    best = (np.inf, u.copy(), None)  # (force left N, u, residual) of the best iterate
     info = SurfaceStart(iterations=0, converged=False)
     for it in range(max_iter + 1):
         states = q + (u @ basis) + np.vstack([np.zeros(q.size), STEP * basis])
         forces = con.numpy_forces(0.0, states, np.broadcast_to(q_t, states.shape), surface=True) @ basis.T
         residual = forces[0] - target
         info.update(iterations=it, residual_N=float(np.max(np.abs(residual))))
+        if info["residual_N"] < best[0]:
+            best = (info["residual_N"], u.copy(), residual)
+        if it == 0:
+            perfect_N = info["residual_N"]  # the force the perfect state leaves
         if info["residual_N"] <= tolerance:
             info["converged"] = True
             break
@@ -58,16 +71,28 @@ def surface_start(con, q, q_t, moves, tolerance=1e-3, max_iter=30) -> tuple:
             break
         jac = (forces[1:] - forces[0]).T / STEP
         delta = np.linalg.lstsq(jac, -residual, rcond=1e-12)[0]
-        largest = np.max(np.abs(delta))
-        u += delta * min(1.0, MAX_MOVE / largest) if largest > 0 else 0.0
+        # each unknown at most MAX_MOVE: a ball that lost a contact (no stiffness along a
+        # direction) must not hold the others' steps back
+        u += np.clip(delta, -MAX_MOVE, MAX_MOVE)
     if not info["converged"]:
-        u[:] = 0.0
-        info["message"] = (f"surface start did not converge ({info['residual_N']:.3g} N left after "
-                           f"{info['iterations']} iterations): the run starts from the perfect bearing's state")
+        left, u, residual = best
+        info["residual_N"] = left
+        if not left < 0.5 * perfect_N:  # no better than the perfect state: keep that one
+            u = np.zeros(len(basis))
+            info["message"] = (f"surface start: no placement carries the surfaces' forces better than the perfect "
+                               f"bearing's state ({perfect_N:.3g} N left there), which the run starts from")
     moved = q + u @ basis
     info["moves"] = {s: moved[6 * s:6 * s + 3] - q[6 * s:6 * s + 3] for s in slots}
+    largest = max(np.linalg.norm(v) for v in info["moves"].values())
     if info["converged"]:
-        largest = max(np.linalg.norm(v) for v in info["moves"].values())
         info["message"] = (f"surface start: {len(slots)} bodies placed, moved by up to {largest * 1e6:.3g} um "
                            f"({info['iterations']} iterations)")
+    elif np.any(u):
+        info["placed"] = True
+        holder = int(owner[int(np.argmax(np.abs(residual)))])
+        who = f"ball {con.layout['balls'].index(holder)}" if holder in con.layout["balls"] else "the inner race"
+        info["message"] = (f"surface start: {len(slots)} bodies placed, moved by up to {largest * 1e6:.3g} um; "
+                           f"{left:.3g} N of the perfect start's forces left on {who} (of {perfect_N:.3g} N "
+                           f"unplaced): a ball over a defect deeper than its approach sinks into it and cannot "
+                           f"keep both contacts' loads")
     return moved, info
