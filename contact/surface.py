@@ -82,7 +82,8 @@ class Defect:
     depth : float
         m. A ball reaches s(L/2) of it (:meth:`reach`); a deeper notch is allowed and stated.
     width : float or None
-        Across the raceway, m (arc length on the groove section); None: the whole raceway.
+        Across the raceway, m (arc length on the groove section); None: the defect crosses the
+        whole track (the vibration command says so).
         Not for a ball (a round pit).
     offset : float
         Across the raceway, of its centre line from the nominal contact path, m (arc length on

@@ -78,3 +78,5 @@ def test_the_vibration_command_says_the_surface_start_once(tmp_path):
     text = proc.stdout + proc.stderr
     assert text.count("surface start") == 1 and "ball 0" in text
     assert ".py:" not in text  # no file and line of a warning
+    # the defect's outline and reach: 20 um over the 6205's largest outer approach (~3.2 um)
+    assert "2 mm long, across the whole track (no width given), 20 um deep; a ball reaches 20 um of it, 6.2 x" in text

@@ -507,7 +507,7 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     assert signal.shape[1] == 10 and np.allclose(np.diff(signal[:, 0]), 5e-5)
     assert "surface" in data["inputs"] and "units" in data
     # R_x = r (d_m + D) / d_m = 4.777 mm at the outer race: s(0.09 mm) = 0.848 um
-    assert "a ball reaches 0.85 um of its 280 um depth" in text.stdout
+    assert "across the whole track (no width given), 280 um deep; a ball reaches 0.848 um of it" in text.stdout
     assert "BPFO" in text.stdout
     solver = data["solver"]
     assert solver["step_cuts"] == len(solver["cut_times_s"]) and 0 <= solver["passages_cut"] <= solver["passages"]

@@ -133,6 +133,29 @@ def _simulate(args) -> int:
     return 0
 
 
+def _defect_lines(setup, args) -> list:
+    """Per defect: its place, outline and depth, and how deep a ball reaches into it, in um and
+    as a share of the race's largest Hertz approach at the quasi-static loads (MODEL.md §13)."""
+    from ..solvers.quasistatic import solve_load_distribution
+
+    b = setup.bearing
+    loads = solve_load_distribution(b, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm)
+    out = []
+    for d in setup.surface.defects:
+        race = "outer" if d.race == "ball" else d.race  # (a ball's pit meets the outer race first)
+        reach = d.reach(b.curvature_radii(b.contact_angle, race)[0])  # R_x at the nominal angle
+        delta = float(max(loads.inner_deflection if race == "inner" else loads.outer_deflection))
+        if d.race == "ball":
+            where, outline = f"ball {d.ball} at {d.angle_deg:g} deg", f"a round pit {d.length * 1e3:g} mm across"
+        else:
+            where = f"{d.race} race at {d.angle_deg:g} deg"
+            outline = f"{d.length * 1e3:g} mm long, " + (f"{d.width * 1e3:g} mm wide" if d.width is not None
+                                                        else "across the whole track (no width given)")
+        share = f", {reach / delta:.2g} x the race's largest approach ({delta * 1e6:.3g} um)" if delta > 0 else ""
+        out.append(f"{where}, {outline}, {d.depth * 1e6:g} um deep; a ball reaches {reach * 1e6:.3g} um of it{share}")
+    return out
+
+
 def _vibration(args) -> int:
     from pathlib import Path
 
@@ -172,12 +195,8 @@ def _vibration(args) -> int:
     print(f"Vibration run (MODEL.md §13): Z={b.balls}, D={b.ball_diameter * 1e3:g} mm, d_m={b.pitch_diameter * 1e3:g} mm; "
           f"axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, {args.time:g} s at "
           f"{args.sample_rate:g} Hz (the first {args.settle:g} s left out)")
-    for i, d in enumerate(surf.defects):
-        # R_x at the nominal angle (a ball's pit meets the outer race first)
-        reach = d.reach(b.curvature_radii(b.contact_angle, "outer" if d.race == "ball" else d.race)[0])
-        note = "" if reach >= d.depth else f"; a ball reaches {reach * 1e6:.2f} um of its {d.depth * 1e6:g} um depth"
-        where = f"ball {d.ball} at {d.angle_deg:g} deg" if d.race == "ball" else f"{d.race} race at {d.angle_deg:g} deg"
-        print(f"  defect {i}: {where}, {d.length * 1e3:g} mm long{note}")
+    for i, line in enumerate(_defect_lines(setup, args)):
+        print(f"  defect {i}: {line}")
     if surf.waviness.active:
         print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}, "
               f"ball {list(surf.waviness.ball)}")
