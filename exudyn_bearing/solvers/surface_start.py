@@ -71,9 +71,8 @@ def surface_start(con, q, q_t, moves, tolerance=1e-3, max_iter=30) -> tuple:
             break
         jac = (forces[1:] - forces[0]).T / STEP
         delta = np.linalg.lstsq(jac, -residual, rcond=1e-12)[0]
-        # each unknown at most MAX_MOVE: a ball that lost a contact (no stiffness along a
-        # direction) must not hold the others' steps back
-        u += np.clip(delta, -MAX_MOVE, MAX_MOVE)
+        largest = np.max(np.abs(delta))
+        u += delta * min(1.0, MAX_MOVE / largest) if largest > 0 else 0.0
     if not info["converged"]:
         left, u, residual = best
         info["residual_N"] = left
