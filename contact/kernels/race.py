@@ -283,12 +283,14 @@ def _flat_terms(terms):
 
 @njit(cache=True, error_model="numpy")
 def _race_contact_flat(idx, balls, frames, geometry, law, tables, flat, out):
+    """:func:`_race_contact` with the terms rebuilt from :func:`_flat_terms`' tuple."""
     terms = TermRecord(SurfaceRecord(*flat[:_N_SURFACE]), *flat[_N_SURFACE:], ())
     _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
 def _race_contacts_prange(balls, frames, geometry, law, tables, flat, out, todo):
+    """The contacts ``todo`` on numba's threads (:func:`race_contacts_parallel`)."""
     for n in prange(todo.shape[0]):
         _race_contact_flat(todo[n], balls, frames, geometry, law, tables, flat, out)
 
