@@ -41,7 +41,7 @@ from numba import njit
 from .geometry import contact_path_radius
 
 __all__ = ["Defect", "Waviness", "SurfaceModel", "SurfaceRecord", "NO_SURFACE", "surface_record", "race_height",
-           "race_heights", "path_drop", "ball_circles", "sag"]
+           "race_heights", "path_drop", "rim_drop", "ball_circles", "sag", "SHAPES"]
 
 RACES = ("inner", "outer")
 PLACES = RACES + ("ball",)
@@ -56,10 +56,18 @@ def _number(key: str, value, *, positive: bool = True, allow_zero: bool = False)
     return float(value)
 
 
-def sag(u: float, radius: float) -> float:
-    """Drop of a sphere of ``radius`` (m; the contact's reduced radius R_x) resting on an edge at
-    horizontal distance ``u`` (m): R − √(R² − u²) (eq. 13.2), R for u ≥ R."""
-    return radius if u >= radius else radius - math.sqrt(radius * radius - u * u)
+@njit(cache=True, error_model="numpy")
+def sag(u, radius):
+    """Drop of a sphere of ``radius`` (m; a contact's reduced radius, R_x along the rolling
+    direction, R_y across it) resting on an edge at horizontal distance ``u`` (m):
+    R − √(R² − u²) (eq. 13.2), R for u ≥ R."""
+    if u >= radius:
+        return radius
+    return radius - math.sqrt(radius * radius - u * u)
+
+
+#: the outlines of a race defect (:class:`Defect`)
+SHAPES = ("rectangle", "ellipse")
 
 
 @dataclass(frozen=True)
@@ -82,8 +90,8 @@ class Defect:
     depth : float
         m. A ball reaches s(L/2) of it (:meth:`reach`); a deeper notch is allowed and stated.
     width : float or None
-        Across the raceway, m (arc length on the groove section); None: the defect crosses the
-        whole track (the vibration command says so).
+        Across the raceway, m (arc length on the groove section); None: a rectangle crosses
+        the whole track (the vibration command says so), an ellipse is round (width = length).
         Not for a ball (a round pit).
     offset : float
         Across the raceway, of its centre line from the nominal contact path, m (arc length on
@@ -92,6 +100,10 @@ class Defect:
         Length of the depth ramp at each edge, m; 0: a sharp edge (an EDM notch).
     ball : int or None
         Index of the ball (0 .. Z - 1) for ``race = 'ball'``; None otherwise.
+    shape : {'rectangle', 'ellipse'}
+        The outline on a race: a rectangle (an EDM notch, a line spall) or an ellipse (a round
+        pit). Over either the ball sinks until it rests on the outline's edges, along and
+        across the groove (eq. 13.2, 13.2b): a defect narrower than the contact is bridged.
     """
 
     race: str
@@ -102,10 +114,15 @@ class Defect:
     offset: float = 0.0
     edge: float = 0.0
     ball: int | None = None
+    shape: str = "rectangle"
 
     def __post_init__(self) -> None:
         if self.race not in PLACES:
             raise ValueError(f"defect.race must be 'inner', 'outer' or 'ball', got {self.race!r}")
+        if self.shape not in SHAPES:
+            raise ValueError(f"defect.shape must be one of {SHAPES}, got {self.shape!r}")
+        if self.race == "ball" and self.shape != "rectangle":
+            raise ValueError("defect.shape: a ball defect is a round pit of diameter `length`; shape is for a race")
         if self.race == "ball":
             if isinstance(self.ball, bool) or not isinstance(self.ball, (int, np.integer)) or self.ball < 0:
                 raise ValueError(f"defect.ball: a ball defect needs the ball's index (an integer >= 0), got "
@@ -125,11 +142,16 @@ class Defect:
         if 2.0 * self.edge > self.length:
             raise ValueError(f"defect.edge: two edge ramps of {self.edge} m do not fit the length {self.length} m")
 
-    def reach(self, radius: float) -> float:
-        """Deepest point a ball reaches in this defect, m: min(d, s(L/2)) (eq. 13.2) with
-        ``radius`` the contact's reduced radius R_x along the rolling direction, m
-        (:func:`contact.geometry.curvature_radii`)."""
-        return min(self.depth, sag(0.5 * self.length, radius))
+    def reach(self, radius: float, across_radius: float = math.inf) -> float:
+        """Deepest point a ball reaches in this defect, m, with ``radius`` the contact's
+        reduced radius R_x along the rolling direction and ``across_radius`` R_y across the
+        groove, m (:func:`contact.geometry.curvature_radii`): a rectangle min(d, s_x(L/2),
+        s_y(W/2)) (eq. 13.2, 13.2b), an ellipse min(d, (L/2)²/(2 R_x), (W/2)²/(2 R_y)) (13.2c)."""
+        if self.shape == "ellipse":
+            half = 0.5 * (self.length if self.width is None else self.width)
+            return min(self.depth, 0.125 * self.length ** 2 / radius, 0.5 * half * half / across_radius)
+        across = math.inf if self.width is None else sag(0.5 * self.width, across_radius)
+        return min(self.depth, sag(0.5 * self.length, radius), across)
 
 
 def _waviness_rows(key: str, rows) -> tuple:
@@ -216,8 +238,9 @@ class SurfaceRecord(NamedTuple):
     """A :class:`SurfaceModel` as the kernels read it (empty arrays: off)."""
 
     waviness: np.ndarray  #: (n, 4): race (0 inner, 1 outer), order, amplitude m, phase rad
-    #: (n, 8): race, azimuth rad, length m, depth m, half width m (inf: all), offset m, edge m,
-    #: groove radius f D m (the arc across the raceway per radian of contact angle)
+    #: (n, 10): race, azimuth rad, length m, depth m, half width m (inf: all), offset m, edge m,
+    #: groove radius f D m (the arc across the raceway per radian of contact angle), the
+    #: contact's reduced radius across the groove R_y m, 1 for an ellipse (else 0)
     defects: np.ndarray
     ball_excess: np.ndarray  #: (Z,) radius excess ΔD/2 of each ball, m; (0,): none
     nominal_angle: float  #: the bearing's contact angle, rad (the defects' offset is from it)
@@ -235,7 +258,7 @@ class SurfaceRecord(NamedTuple):
         return self.ball_defects.shape[0] + self.ball_waviness.shape[0] > 0
 
 
-NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 8)), np.zeros(0), 0.0, np.zeros((0, 7)), np.zeros((0, 10)))
+NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 10)), np.zeros(0), 0.0, np.zeros((0, 7)), np.zeros((0, 10)))
 
 
 def ball_circles(bearing) -> np.ndarray:
@@ -288,8 +311,14 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
         groove_arc = math.pi * conformity * diam  # the half torus of the groove section
         if d.width is not None and d.width > groove_arc:
             raise ValueError(f"defect.width: {d.width} m is wider than the {d.race} groove ({groove_arc:.6g} m of arc)")
-        half = math.inf if d.width is None else 0.5 * d.width
-        rows.append((k, math.radians(d.angle_deg), d.length, d.depth, half, d.offset, d.edge, conformity * diam))
+        ellipse = d.shape == "ellipse"
+        half = 0.5 * (d.length if d.width is None else d.width) if ellipse else (
+            math.inf if d.width is None else 0.5 * d.width)
+        # the reduced radius across the groove R_y = f D / (2 f - 1) (MODEL.md §2): a ball
+        # spans a defect's width as a sphere of radius R_y spans a gap
+        across_radius = conformity * diam / (2.0 * conformity - 1.0)
+        rows.append((k, math.radians(d.angle_deg), d.length, d.depth, half, d.offset, d.edge, conformity * diam,
+                     across_radius, 1.0 if ellipse else 0.0))
     w = surface.waviness
     waves = [(k, order, amp, math.radians(phase)) for k, name in enumerate(RACES)
              for order, amp, phase in getattr(w, name)]
@@ -308,7 +337,7 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
         zero, axis = circles[j]
         ball_waves.append((j, order, amp, math.radians(phase), *(zero / np.linalg.norm(zero)),
                            *(axis / np.linalg.norm(axis))))
-    return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 8),
+    return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 10),
                          excess, alpha, np.array(pits, dtype=float).reshape(-1, 7),
                          np.array(ball_waves, dtype=float).reshape(-1, 10))
 
@@ -341,12 +370,61 @@ def race_height(surface, race, theta, contact_angle, point_radius, ball, rolling
         if x <= 0.0 or x >= length:
             continue
         across = defects[i, 7] * (contact_angle - surface.nominal_angle) - defects[i, 5]
-        if abs(across) > defects[i, 4]:
+        half = defects[i, 4]
+        if abs(across) > half:
             continue
-        drop, slope = path_drop(x, length, depth, edge, rolling_radius)
+        if defects[i, 9] > 0.0:  # an ellipse: the ball rests on its rim (eq. 13.2c)
+            a = 0.5 * length
+            if (x - a) * (x - a) / (a * a) + across * across / (half * half) >= 1.0:
+                continue
+            drop, slope = rim_drop(x - a, across, a, half, depth, rolling_radius, defects[i, 8])
+        else:
+            drop, slope = path_drop(x, length, depth, edge, rolling_radius)
+            if half < math.inf:  # a width: the ball also rests on the side edges (eq. 13.2b)
+                side = sag(half - abs(across), defects[i, 8])
+                if side < drop:
+                    drop, slope = side, 0.0
         h -= drop
         dh -= slope * point_radius
     return h, dh
+
+
+#: rim points sampled before the lowest one is refined (:func:`rim_drop`)
+RIM_SAMPLES = 64
+
+
+@njit(cache=True, error_model="numpy")
+def rim_drop(x, y, a, b, depth, rolling_radius, across_radius):
+    """(drop m, d drop/dx) of a contact at (``x`` along, ``y`` across; m from the centre) over an
+    elliptical defect of semi-axes ``a`` (along) and ``b`` (across), m, and ``depth``: the ball's
+    sag surface (x'²/(2 R_x) + y'²/(2 R_y)) meets the rim at its lowest point, or the floor
+    (eq. 13.2c). The rim's lowest point: the least of RIM_SAMPLES points, then golden-section
+    refinement to 1e-10 rad."""
+    best = np.inf
+    t_best = 0.0
+    for k in range(RIM_SAMPLES):
+        t = 2.0 * math.pi * k / RIM_SAMPLES
+        dx, dy = a * math.cos(t) - x, b * math.sin(t) - y
+        f = dx * dx / (2.0 * rolling_radius) + dy * dy / (2.0 * across_radius)
+        if f < best:
+            best, t_best = f, t
+    lo, hi = t_best - 2.0 * math.pi / RIM_SAMPLES, t_best + 2.0 * math.pi / RIM_SAMPLES
+    g = 0.5 * (math.sqrt(5.0) - 1.0)
+    while hi - lo > 1e-10:
+        t1, t2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        d1x, d1y = a * math.cos(t1) - x, b * math.sin(t1) - y
+        d2x, d2y = a * math.cos(t2) - x, b * math.sin(t2) - y
+        if (d1x * d1x / rolling_radius + d1y * d1y / across_radius
+                < d2x * d2x / rolling_radius + d2y * d2y / across_radius):
+            hi = t2
+        else:
+            lo = t1
+    t = 0.5 * (lo + hi)
+    dx, dy = a * math.cos(t) - x, b * math.sin(t) - y
+    f = dx * dx / (2.0 * rolling_radius) + dy * dy / (2.0 * across_radius)
+    if depth <= f:
+        return depth, 0.0
+    return f, -dx / rolling_radius  # (the rim point held: d/dx of its sag)
 
 
 @njit(cache=True, error_model="numpy")

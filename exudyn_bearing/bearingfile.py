@@ -42,6 +42,7 @@ Example::
     length = 0.18e-3                 # along the rolling direction, m
     depth = 0.28e-3                  # m
     width = 1e-3                     # across the raceway, m; absent: the whole raceway
+    shape = "rectangle"              # or "ellipse" (a round pit; width absent: width = length)
     [[defect]]                       # a pit on a ball: round, `length` its diameter
     race = "ball"
     ball = 3                         # which ball, 0 .. Z - 1
@@ -230,7 +231,7 @@ def _surface(data: dict) -> SurfaceModel:
     for i, table in enumerate(defects):
         if not isinstance(table, dict):
             raise ValueError("defect: write each defect as a [[defect]] table")
-        table = _table({"defect": table}, "defect", allowed, {"race"})
+        table = _table({"defect": table}, "defect", allowed, {"race", "shape"})
         missing = {"race", "angle_deg", "length", "depth"} - set(table)
         if missing:
             raise ValueError(f"[[defect]] number {i + 1} needs {', '.join(sorted(missing))}")

@@ -43,7 +43,7 @@ import math
 
 import numpy as np
 
-from contact.geometry import contact_path_radius, rolling_radius
+from contact.geometry import contact_path_radius
 
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
            "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
@@ -167,8 +167,8 @@ def _strikes(bearing, surface, loads, inner_rpm, outer_rpm):
             delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
             if delta <= 0.0:
                 continue
-            r_x = float(rolling_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race))
-            reach = d.reach(r_x)
+            r_x, r_y = (float(v) for v in bearing.curvature_radii(bearing.contact_angle, race))
+            reach = d.reach(r_x, r_y)
             sunk = min(reach, delta)
             yield speed * math.sqrt(2.0 * sunk / r_x) / (w_b * delta), reach / delta
 

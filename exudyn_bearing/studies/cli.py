@@ -143,14 +143,18 @@ def _defect_lines(setup, args) -> list:
     out = []
     for d in setup.surface.defects:
         race = "outer" if d.race == "ball" else d.race  # (a ball's pit meets the outer race first)
-        reach = d.reach(b.curvature_radii(b.contact_angle, race)[0])  # R_x at the nominal angle
+        reach = d.reach(*b.curvature_radii(b.contact_angle, race))  # R_x, R_y at the nominal angle
         delta = float(max(loads.inner_deflection if race == "inner" else loads.outer_deflection))
         if d.race == "ball":
             where, outline = f"ball {d.ball} at {d.angle_deg:g} deg", f"a round pit {d.length * 1e3:g} mm across"
         else:
             where = f"{d.race} race at {d.angle_deg:g} deg"
-            outline = f"{d.length * 1e3:g} mm long, " + (f"{d.width * 1e3:g} mm wide" if d.width is not None
-                                                        else "across the whole track (no width given)")
+            if d.shape == "ellipse":
+                outline = (f"a round pit {d.length * 1e3:g} mm across" if d.width is None else
+                           f"an elliptical pit {d.length * 1e3:g} mm long, {d.width * 1e3:g} mm wide")
+            else:
+                outline = f"{d.length * 1e3:g} mm long, " + (f"{d.width * 1e3:g} mm wide" if d.width is not None
+                                                            else "across the whole track (no width given)")
         share = f", {reach / delta:.2g} x the race's largest approach ({delta * 1e6:.3g} um)" if delta > 0 else ""
         out.append(f"{where}, {outline}, {d.depth * 1e6:g} um deep; a ball reaches {reach * 1e6:.3g} um of it{share}")
     return out
