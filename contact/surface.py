@@ -141,6 +141,9 @@ class Defect:
         _number("defect.edge", self.edge, allow_zero=True)
         if 2.0 * self.edge > self.length:
             raise ValueError(f"defect.edge: two edge ramps of {self.edge} m do not fit the length {self.length} m")
+        if self.shape == "ellipse" and self.edge > 0.0:
+            raise ValueError("defect.edge: an elliptical pit has sharp edges (eq. 13.2c); edge ramps are for a "
+                             "rectangle")
 
     def reach(self, radius: float, across_radius: float = math.inf) -> float:
         """Deepest point a ball reaches in this defect, m, with ``radius`` the contact's

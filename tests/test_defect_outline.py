@@ -93,6 +93,8 @@ def test_bad_shapes_are_refused_by_name():
         Defect("outer", 0.0, 1e-3, 1e-6, shape="circle")
     with pytest.raises(ValueError, match="defect.shape"):
         Defect("ball", 0.0, 1e-3, 1e-6, ball=0, shape="ellipse")
+    with pytest.raises(ValueError, match="defect.edge"):  # an edge ramp the ellipse would not use
+        Defect("outer", 0.0, 1e-3, 1e-6, edge=0.1e-3, shape="ellipse")
 
 
 def test_the_shape_reaches_the_file_and_the_vibration_command(tmp_path):
