@@ -245,6 +245,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     p_max = contact.max_pressure(load)
     loaded = load > 0
     model = traction_model(law.traction)
+    stage_2 = False  # the per-contact terms' force and couple apply (MODEL.md §11b; registered terms)
     if model.evaluate is not None and np.any(loaded):
         idx = np.flatnonzero(loaded)
         a, b = contact.semi_axes(load)
@@ -283,7 +284,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     force = -load[:, None] * kin.normal + (fx + rolling_push)[:, None] * kin.rolling + fy[:, None] * kin.transverse
     # lever arm p - c = r n: the normal force has no moment about the ball centre
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
-    if law.rolling_resistance or (terms is not None and len(terms.registered) > 0):
+    if stage_2 or law.rolling_resistance:
         moment = moment + rolling[:, None] * kin.transverse
     if kin.surface_slope is not None:  # the tilted common normal, through the ball centre (eq. 13.7)
         force = force - (load * kin.surface_slope)[:, None] * kin.rolling

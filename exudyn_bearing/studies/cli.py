@@ -133,18 +133,11 @@ def _simulate(args) -> int:
     return 0
 
 
-def _defect_lines(setup, args) -> list:
+def _defect_lines(setup, reaches) -> list:
     """Per defect: its place, outline and depth, and how deep a ball reaches into it, in um and
-    as a share of the race's largest Hertz approach at the quasi-static loads (MODEL.md §13)."""
-    from ..solvers.quasistatic import solve_load_distribution
-
-    b = setup.bearing
-    loads = solve_load_distribution(b, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm)
+    as a share of the race's largest Hertz approach (``reaches``: the run's ``defect_reach_m``)."""
     out = []
-    for d in setup.surface.defects:
-        race = "outer" if d.race == "ball" else d.race  # (a ball's pit meets the outer race first)
-        reach = d.reach(*b.curvature_radii(b.contact_angle, race))  # R_x, R_y at the nominal angle
-        delta = float(max(loads.inner_deflection if race == "inner" else loads.outer_deflection))
+    for d, (reach, delta) in zip(setup.surface.defects, reaches):
         if d.race == "ball":
             where, outline = f"ball {d.ball} at {d.angle_deg:g} deg", f"a round pit {d.length * 1e3:g} mm across"
         else:
@@ -199,7 +192,7 @@ def _vibration(args) -> int:
     print(f"Vibration run (MODEL.md §13): Z={b.balls}, D={b.ball_diameter * 1e3:g} mm, d_m={b.pitch_diameter * 1e3:g} mm; "
           f"axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, {args.time:g} s at "
           f"{args.sample_rate:g} Hz (the first {args.settle:g} s left out)")
-    for i, line in enumerate(_defect_lines(setup, args)):
+    for i, line in enumerate(_defect_lines(setup, result.solver["defect_reach_m"])):
         print(f"  defect {i}: {line}")
     if surf.waviness.active:
         print(f"  waviness: inner {list(surf.waviness.inner)}, outer {list(surf.waviness.outer)}, "

@@ -147,6 +147,20 @@ def spectral_peaks(freq, amp, count: int = 10, min_hz: float = 0.0, max_hz: floa
     return out
 
 
+def defect_reaches(bearing: Bearing, surface, loads) -> list:
+    """Per defect of ``surface``: [how deep a ball reaches into it (:meth:`contact.surface.Defect.reach`,
+    MODEL.md eq. 13.2–13.2c, R_x and R_y at the nominal contact angle), the race's largest Hertz
+    approach δ at the quasi-static ``loads``], m; a ball's pit is read against the outer race,
+    which it meets first."""
+    out = []
+    for d in surface.defects:
+        race = "outer" if d.race == "ball" else d.race
+        reach = d.reach(*(float(v) for v in bearing.curvature_radii(bearing.contact_angle, race)))
+        delta = float(max(loads.inner_deflection if race == "inner" else loads.outer_deflection))
+        out.append([reach, delta])
+    return out
+
+
 def defect_events(results, bearing: Bearing, surface) -> list:
     """Each ball's passages over each defect (MODEL.md §13b): [{"defect": index, "ball": j,
     "entry_s": the contact reaches the entry edge, where the ball starts to unload,
@@ -283,7 +297,8 @@ class VibrationResult:
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
-                          "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -",
+                          "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -; "
+                                    "defect_reach_m [reach, approach] m",
                           "error_estimate": "Hz, %, pp, s",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
@@ -391,6 +406,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "passages_cut": passages_cut(events, info.cut_times), "passages": len(events),
                            "newton_iterations": int(info.newton_iterations), "strike_number": strike,
                            "reach_share": share,
+                           "defect_reach_m": defect_reaches(bearing, surface, loads) if loads is not None else [],
                            "surface_start": (handle.connector.surface_start or {}).get("message")})
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
