@@ -146,6 +146,16 @@ class BearingConnector(ConnectorDiagnostics):
         w = omega[:, slot]
         return origin, a @ rot_loc, vel[:, slot] + cross(w, origin - pos[:, slot]), w, slot
 
+    def race_pose(self, name, pos, rot):
+        """Origin (3,) m and rotation (3, 3) of the ``'inner'`` or ``'outer'`` race frame for the
+        node positions ``pos`` (n, 3) and rotation matrices ``rot`` (n, 3, 3) of one state
+        (:meth:`decode`), global."""
+        slot = self.layout[name]
+        if slot is None:
+            return self.origin, self.rotation
+        r_loc, rot_loc = self.race_frames[name]
+        return pos[slot] + rot[slot] @ r_loc, rot[slot] @ rot_loc
+
     def race_frame(self, name, t, q, q_t):
         """Origin (3,) in m and rotation (3, 3) of the ``'inner'`` or ``'outer'`` race frame
         (third column: the race axis), global, for absolute coordinates q and velocities q_t."""

@@ -98,6 +98,22 @@ class BearingHandle:
             step = min(step, strike_step(self.bearing, surface, self.initialLoads, innerRpm, outerRpm))
         return step
 
+    def PassageWindows(self, innerRpm: float, outerRpm: float = 0.0, coarseStep: float = 0.0):
+        """Where this bearing's balls need :meth:`RecommendedSurfaceStep`: rows (race 0 inner /
+        1 outer, the defect's azimuth rad, the window's half angle rad) of
+        :func:`~exudyn_bearing.model.steprule.passage_windows` for races turning at ``innerRpm``
+        and ``outerRpm`` and ``coarseStep`` s taken elsewhere (MODEL.md §13c); None with a pit on
+        a ball or without the start's loads, an empty array without race defects."""
+        from .steprule import passage_windows
+
+        surface = self.connector.surface
+        if surface is None or not surface.defects:
+            return np.zeros((0, 3))
+        if self.initialLoads is None:
+            return None
+        return passage_windows(self.bearing, surface, self.initialLoads, innerRpm, outerRpm, coarseStep,
+                               self.connector.law.damping_ratio)
+
     def RecommendedAbsoluteTolerance(self) -> float:
         """Newton's absolute tolerance for this bearing, N: 3e-5 of its largest contact load
         at the start state, the resolution of the compiled traction rule (MODEL.md §10b;

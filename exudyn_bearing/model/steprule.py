@@ -48,7 +48,8 @@ from contact.geometry import contact_path_radius
 __all__ = ["NOMINAL_STEP", "MAX_VIBRATION_PHASE", "MAX_ORBIT_PREDICTOR_RATIO", "ORBIT_PREDICTOR_FACTOR",
            "FORCE_RESOLUTION", "MIN_ABSOLUTE_TOLERANCE", "ball_vibration_frequency", "orbit_step_limit",
            "recommended_step", "recommended_absolute_tolerance", "STEPS_PER_PASSAGE", "passage_step",
-           "STRIKE_NUMBER", "STRIKE_PHASE", "OPENING_SHARE", "strike_number", "reach_share", "strike_step"]
+           "STRIKE_NUMBER", "STRIKE_PHASE", "OPENING_SHARE", "strike_number", "reach_share", "strike_step",
+           "RING_DECAY", "LOOKAHEAD_STEPS", "passage_windows"]
 
 #: the step that holds on the reference bearing, s
 NOMINAL_STEP = 1e-4
@@ -205,3 +206,39 @@ def strike_step(bearing, surface, loads, inner_rpm: float, outer_rpm: float = 0.
             and reach_share(bearing, surface, loads, inner_rpm, outer_rpm) < OPENING_SHARE):
         return math.inf
     return STRIKE_PHASE / ball_vibration_frequency(bearing, loads)
+
+
+#: the share of a strike's ringing a passage window waits out: the ball's contact vibration,
+#: damped at the contact's ratio ζ, decays to it in ln(1/RING_DECAY) / (ζ ω_b) (MODEL.md §13c)
+RING_DECAY = 0.01
+#: coarse steps of look-ahead before a passage window: the fine step starts at least this many
+#: coarse steps of the contact's travel before the window proper (MODEL.md §13c)
+LOOKAHEAD_STEPS = 2.0
+
+
+def passage_windows(bearing, surface, loads, inner_rpm: float, outer_rpm: float, coarse_step: float,
+                    damping_ratio: float):
+    """Where a ball's contact needs the passage step (MODEL.md §13c): per race defect of
+    ``surface``, a row (race: 0 inner, 1 outer; the defect's centre azimuth in the race's own
+    frame, rad; the window's half angle on the contact path, rad). The window reaches on
+    either side of the defect's centre over L/2 + a + v (τ + LOOKAHEAD_STEPS h): a = √(2 R_x δ)
+    the contact's reach ahead of its centre at the race's largest approach δ (a sphere's chord
+    at that depth, above the Hertz semi-axis), v = |ω_c − ω_race| ρ the contact's speed over
+    the race at pure rolling, τ = ln(1/RING_DECAY)/(ζ ω_b) the ringing after the strike
+    (``damping_ratio`` ζ of the contact, at least 0.01; ω_b :func:`ball_vibration_frequency`)
+    and h the ``coarse_step`` taken elsewhere, s. Returns an (n, 3) array, or None where the
+    surface has a pit on a ball (it passes at the ball's rotation, not its orbit: the passage
+    step then holds for the whole run)."""
+    if surface is None or any(d.race == "ball" for d in surface.defects):
+        return None
+    w_b = ball_vibration_frequency(bearing, loads)
+    ring = math.log(1.0 / RING_DECAY) / (max(damping_ratio, 0.01) * w_b) if w_b > 0 else 0.0
+    rows = []
+    for d in surface.defects:
+        (race, speed), = _contact_speeds(bearing, d, inner_rpm, outer_rpm)
+        rho = float(contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, race))
+        r_x = float(bearing.curvature_radii(bearing.contact_angle, race)[0])
+        delta = float(np.max(loads.inner_deflection if race == "inner" else loads.outer_deflection, initial=0.0))
+        reach = 0.5 * d.length + math.sqrt(2.0 * r_x * max(delta, 0.0)) + speed * (ring + LOOKAHEAD_STEPS * coarse_step)
+        rows.append((0.0 if race == "inner" else 1.0, math.radians(d.angle_deg), min(reach / rho, math.pi)))
+    return np.array(rows, dtype=float).reshape(-1, 3)

@@ -21,6 +21,7 @@ from ..races import node_rows
 from ..renamed import accepts_old_names
 from ..results.records import assumptions_record, setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup
+from .stepping import PassageStepper, solve_with_passages
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -77,6 +78,10 @@ class SolverSettings:
         :data:`PROGRESS_PERIOD` s of wall time; runs shorter than that print nothing.
     output_step : float
         Period of the recorded states, s.
+    passage_step : float or None
+        Implicit solvers: the step while a ball passes a race defect, s (``step`` elsewhere;
+        the passage windows are ``run_solver``'s ``windows``; MODEL.md §13c). None: ``step``
+        throughout.
     """
 
     solver: str = "generalized-alpha"
@@ -90,13 +95,14 @@ class SolverSettings:
     step_recovery_iterations: int = 5
     predictor: bool = True
     progress: bool = True
+    passage_step: float | None = None
 
     def __post_init__(self) -> None:
         if self.solver not in SOLVERS:
             raise ValueError(f"solver must be one of {SOLVERS}, got {self.solver!r}")
-        for name in ("step", "relative_tolerance", "absolute_tolerance", "output_step"):
+        for name in ("step", "relative_tolerance", "absolute_tolerance", "output_step", "passage_step"):
             value = getattr(self, name)
-            if name in ("step", "absolute_tolerance") and value is None:
+            if name in ("step", "absolute_tolerance", "passage_step") and value is None:
                 continue
             if not (math.isfinite(value) and value > 0):
                 raise ValueError(f"{name} must be positive, got {value!r}")
@@ -173,6 +179,9 @@ class RunInfo:
     #: end times, s, of the steps Newton failed and the solver tried again at a shorter step
     #: (implicit solvers of a scene with a bearing; None where not counted)
     cut_times: tuple | None = None
+    #: simulated time and steps at the passage step (runs with one), s and count
+    fine_time_s: float | None = None
+    fine_steps: int | None = None
 
 
 def _exudyn_settings(settings: SolverSettings, end_time: float):
@@ -245,7 +254,7 @@ _ADVICE = ("; Newton did not converge: the EHD traction is too stiff for this st
            "(SolverSettings(step=...)) or a limiting shear stress (ContactLaw(limiting_shear=0.07))")
 
 
-def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunInfo:
+def run_solver(mbs, handles, end_time: float, settings=SolverSettings(), windows=None) -> RunInfo:
     """Integrate an assembled ``mbs`` containing the given bearing handles to
     ``end_time`` s (their connectors carry the block Jacobian from the builder;
     ``jacobian='exudyn'`` removes it) and check the result (raises
@@ -255,7 +264,12 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     quiet, sensors written every ``output_step``), or the user's own
     ``exu.SimulationSettings``, used as they are — solution file, console output, sensor
     periods, solver and tolerances — except ``endTime`` (= ``end_time``) and
-    ``numberOfSteps``, which keeps the step ``endTime / numberOfSteps`` they held."""
+    ``numberOfSteps``, which keeps the step ``endTime / numberOfSteps`` they held.
+
+    ``windows``: per handle, its ``PassageWindows(...)`` (or None); with
+    ``settings.passage_step`` the run takes that step while a ball lies in one and
+    ``settings.step`` elsewhere (:class:`~exudyn_bearing.simulation.stepping.PassageStepper`);
+    ``RunInfo.fine_time_s`` says how long."""
     import exudyn as exu
 
     if isinstance(settings, exu.SimulationSettings):
@@ -275,10 +289,14 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     counted = len(predictor.cut_times) if predictor is not None else 0
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
+    stepper = _stepper(handles, settings, windows)
     start, cpu = _time.perf_counter(), _time.process_time()
     try:
-        ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
-                              showCausingItems=False)
+        if stepper is None:
+            ok = exu.SolveDynamic(mbs, s, solverType=s.timeIntegration.solverType, showHints=False,
+                                  showCausingItems=False)
+        else:
+            ok = solve_with_passages(mbs, s, stepper)
     except Exception as err:  # Exudyn raises on Newton failure or NaN
         text = str(err)
         if isinstance(err, _PROGRAMMING_ERRORS) or ("Error in Python USER FUNCTION" in text and any(
@@ -300,6 +318,8 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
     info = RunInfo(asdict(settings), wall, int(getattr(it, "currentStepIndex", 0) or s.timeIntegration.numberOfSteps),
                    getattr(it, "newtonStepsCount", None), getattr(it, "newtonJacobiCount", None), cpu,
                    _cut_times(predictor, counted, settings.implicit))
+    if stepper is not None:
+        info.fine_time_s, info.fine_steps = stepper.fine_time, stepper.fine_steps
     if not ok:
         raise BearingSimulationError(f"solver {settings.solver} did not finish (step {settings.step:g} s)"
                                      f"{_where(handles, mbs)}; try a smaller step or generalized-alpha")
@@ -308,6 +328,17 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings()) -> RunI
         raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles, mbs)}: "
                                      "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
     return info
+
+
+def _stepper(handles, settings, windows):
+    """The :class:`PassageStepper` of a run with a passage step and windows, else None."""
+    if settings.passage_step is None or not settings.implicit or settings.passage_step >= settings.step:
+        return None
+    if windows is None or len(windows) != len(handles):
+        raise ValueError("passage_step: give run_solver the windows, one handle's PassageWindows(...) or None each")
+    if not any(w is not None and len(w) for w in windows):
+        return None
+    return PassageStepper(handles, windows, settings.step, settings.passage_step)
 
 
 def _cut_times(predictor, counted, implicit):

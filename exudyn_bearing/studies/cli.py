@@ -211,7 +211,7 @@ def _vibration(args) -> int:
     print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
-          f"(step {sv['step_s']:g} s, strike number {sv['strike_number']:.2g}, defect reach "
+          f"(step {_steps_said(sv)}, strike number {sv['strike_number']:.2g}, defect reach "
           f"{sv['reach_share']:.2g} of the approach, {sv['steps']} steps, "
           f"{sv['extra_steps']} more than planned; {sv['step_cuts']} step cuts, after {sv['passages_cut']} of the "
           f"{sv['passages']} passages)")
@@ -224,6 +224,15 @@ def _vibration(args) -> int:
     if args.plot:
         print(f"  plot written to {args.plot}")
     return 0
+
+
+def _steps_said(solver: dict) -> str:
+    """The run's step(s) in words: one step, or the passage step near passages and the coarse one elsewhere."""
+    fine, coarse = solver["step_s"], solver.get("coarse_step_s", solver["step_s"])
+    if coarse <= fine:
+        return f"{fine:g} s"
+    return (f"{fine:g} s near defect passages ({100 * solver['passage_time_share']:.0f} % of the time), "
+            f"{coarse:g} s elsewhere")
 
 
 def _steady(args) -> int:

@@ -84,11 +84,12 @@ def amplitude_spectrum(signal, sample_rate: float):
     return np.fft.rfftfreq(len(x), 1.0 / sample_rate), amp
 
 
-def sampled_signal(times, values, sample_rate: float):
+def sampled_signal(times, values, sample_rate: float, step: float | None = None):
     """A sensor's signal as a data-acquisition system records it at ``sample_rate`` Hz
     (MODEL.md §13b): ``values`` (rows at the solver's step ends ``times``, s; a cut step
     shifts them off any grid) interpolated by a cubic spline onto a uniform grid at the
-    whole multiple m of ``sample_rate`` nearest the step rate, low-passed at
+    whole multiple m of ``sample_rate`` nearest the rate of ``step`` (s; default the median
+    step, a run's finest where it steps finer near defect passages), low-passed at
     :data:`ANTI_ALIAS_CORNER` × ``sample_rate`` (8th-order Butterworth, forward and backward)
     and taken at every m-th point. Sampling the steps directly instead aliases the contact
     resonances above the Nyquist frequency into the band below it, more of them the finer
@@ -104,7 +105,7 @@ def sampled_signal(times, values, sample_rate: float):
         raise ValueError("sampled_signal: values hold NaN or inf (a diverged run?)")
     if not (math.isfinite(sample_rate) and sample_rate > 0):
         raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
-    m = max(1, int(round(1.0 / (sample_rate * float(np.median(np.diff(times)))))))
+    m = max(1, int(round(1.0 / (sample_rate * (step or float(np.median(np.diff(times))))))))
     fine = np.arange(int(math.floor(times[-1] * sample_rate * m + 1e-6)) + 1) / (sample_rate * m)
     x = CubicSpline(times, values, axis=0)(fine)
     sos = butter(8, ANTI_ALIAS_CORNER * sample_rate, fs=sample_rate * m, output="sos")
@@ -362,19 +363,20 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     loads = handle.initialLoads
     strike = strike_number(bearing, surface, loads, rpm) if loads is not None else 0.0
     share = reach_share(bearing, surface, loads, rpm) if loads is not None else 0.0
-    step = min(settings.step or min(handle.RecommendedStep(), handle.RecommendedSurfaceStep(rpm)), period)
-    step = period / math.ceil(period / step - 1e-9)  # a whole number of steps per sample
+    coarse, step, windows = _steps(handle, settings, rpm, period)
     # the sensors (and the bearing's states) at every step: sampled_signal then records the
     # housing as a data-acquisition system would, through an anti-aliasing filter
-    settings = replace(settings, step=step, output_step=step)
+    settings = replace(settings, step=coarse, passage_step=step if step < coarse else None, output_step=step)
     wall = _time.perf_counter()
-    info = run_solver(mbs, [handle], time, settings)
+    info = run_solver(mbs, [handle], time, settings, windows=[windows])
     wall = _time.perf_counter() - wall
+    fine_time = time if info.fine_time_s is None else info.fine_time_s
+    planned = int(round(fine_time / step + (time - fine_time) / coarse))
     frame = handle.connector.rotation
     names = ("Acceleration", "Velocity", "Displacement")
     data = [np.asarray(mbs.GetSensorStoredData(sensors[k])) for k in names]
     # the three sensors are written at the same step ends: one spline and one filter for all
-    t, recorded = sampled_signal(data[0][:, 0], np.hstack([d[:, 1:4] for d in data]), sample_rate)
+    t, recorded = sampled_signal(data[0][:, 0], np.hstack([d[:, 1:4] for d in data]), sample_rate, step=step)
     acc, vel, disp = (recorded[:, 3 * i:3 * i + 3] @ frame for i in range(3))
     # the bearing's outputs at <= 2 kHz: means and smooth ball angles (1 s of 20-kHz states
     # costs ~90 s through the connector, 10x the run's own post-processing otherwise)
@@ -401,7 +403,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
                           float(np.mean(sub.kinematic_cage_slip_percent)), wall, inputs, results,
-                          {"step_s": step, "steps": int(info.steps), "extra_steps": int(info.steps) - int(round(time / step)),
+                          {"step_s": step, "coarse_step_s": coarse, "passage_time_share": fine_time / time,
+                           "steps": int(info.steps), "extra_steps": int(info.steps) - planned,
                            "step_cuts": len(info.cut_times), "cut_times_s": [float(c) for c in info.cut_times],
                            "passages_cut": passages_cut(events, info.cut_times), "passages": len(events),
                            "newton_iterations": int(info.newton_iterations), "strike_number": strike,
@@ -411,7 +414,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle,
-                          settings=replace(settings, step=0.5 * step))
+                          settings=replace(settings, step=0.5 * coarse,
+                                           passage_step=0.5 * step if step < coarse else None))
         (f0, a0), (f1, a1) = out.envelope_peaks[0], finer.envelope_peaks[0]
         out.error_estimate = {"method": "rerun at half the step", "reference_step_s": 0.5 * step,
                               "reference_wall_time_s": finer.wall_time_s,
@@ -422,6 +426,24 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                               "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent
                                                             - out.kinematic_cage_slip_percent)}
     return out
+
+
+def _steps(handle, settings, rpm, period):
+    """(coarse step, passage step, passage windows) of a vibration run, s (MODEL.md §13c):
+    the bearing's step (or ``settings.step``) at most the sample ``period``, and the surface's
+    step (:meth:`~exudyn_bearing.model.handle.BearingHandle.RecommendedSurfaceStep`, or
+    ``settings.passage_step``) only inside the passage windows — everywhere where a ball has a
+    pit (its passages follow the ball's rotation) or ``settings.step`` alone is given; each a
+    whole number per sample."""
+    def whole(h):  # a whole number of steps per sample
+        return period / math.ceil(period / min(h, period) - 1e-9)
+
+    if settings.step is not None and settings.passage_step is None:
+        return whole(settings.step), whole(settings.step), None
+    coarse = whole(settings.step or handle.RecommendedStep())
+    fine = whole(min(coarse, settings.passage_step or handle.RecommendedSurfaceStep(rpm)))
+    windows = handle.PassageWindows(rpm, 0.0, coarse) if fine < coarse else None
+    return (coarse if windows is not None else fine), fine, windows
 
 
 def write_signal(result: VibrationResult, path) -> None:
