@@ -409,10 +409,10 @@ def test_ball_pit_under_radial_load_shows_twice_bsf_with_cage_sidebands():
     races = [e["race"] for e in events]
     assert len(events) >= 30 and all(a != b for a, b in zip(races, races[1:])), races
     for race in ("inner", "outer"):
-        entries = np.array([e["entry_s"] for e in events if e["race"] == race])
+        entries = np.array([e["edge_s"] for e in events if e["race"] == race])
         np.testing.assert_allclose(np.diff(entries), 1.0 / actual["BSF"], rtol=2e-3)
     crossing = 0.18e-3 / (CWRU_6205_BEARING.ball_radius * 2 * np.pi * actual["BSF"])
-    np.testing.assert_allclose([e["exit_s"] - e["entry_s"] for e in events], crossing, rtol=0.01)
+    np.testing.assert_allclose([e["exit_s"] - e["edge_s"] for e in events], crossing, rtol=0.01)
 
 
 def test_ball_waviness_even_orders_vibrate_odd_orders_hardly():
@@ -467,15 +467,15 @@ def test_notch_passage_follows_its_geometry():
     (event,) = [e for e in defect_events(r, b, surface) if e["ball"] == j]
     w_c = float(np.mean(r.cage_speed))
     speed = (0.5 * b.pitch_diameter + r_b) * w_c  # the contact's speed over the outer race
-    assert event["exit_s"] - event["entry_s"] == pytest.approx(length / speed, rel=5e-3)
+    assert event["exit_s"] - event["edge_s"] == pytest.approx(length / speed, rel=5e-3)
     load, t = r.outer["load"][:, j], r.time
-    before = load[np.searchsorted(t, event["entry_s"]) - 20]
+    before = load[np.searchsorted(t, event["edge_s"]) - 20]
     unloading = np.flatnonzero(load < 0.98 * before)[0]  # the first state where the ball has started to unload
     # 2 % of its load is gone when the entry edge's circle has dropped 1 - 0.98^(2/3) of its approach
     approach = float(b.hertz(0.0, "outer").deflection(before))
     r_x = r_b * (b.pitch_diameter + b.ball_diameter) / b.pitch_diameter
     lag = math.sqrt(2 * r_x * (1 - 0.98 ** (2 / 3)) * approach) / speed
-    assert t[unloading] == pytest.approx(event["entry_s"] + lag, abs=2 * dt)
+    assert t[unloading] == pytest.approx(event["edge_s"] + lag, abs=2 * dt)
     off = (load == 0.0).astype(int)
     edges = np.flatnonzero(np.diff(off))  # starts (0 -> 1) and ends (1 -> 0) of contact-free stretches
     runs = [(b_ - a_, a_, b_) for a_, b_ in zip(edges[::2], edges[1::2])]
@@ -502,7 +502,7 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
         assert set(data["fault_frequencies_Hz"][kind]) == {"BPFO", "BPFI", "BSF", "FTF"}
     assert data["envelope_peaks_Hz"] and len(data["envelope_peaks_Hz"][0]) == 2
     events = data["defect_events"]
-    assert events and all(e["entry_s"] < e["exit_s"] and e["defect"] == 0 for e in events)
+    assert events and all(e["edge_s"] < e["exit_s"] and e["defect"] == 0 for e in events)
     signal = np.loadtxt(data["signal"], delimiter=",", skiprows=2)
     assert signal.shape[1] == 10 and np.allclose(np.diff(signal[:, 0]), 5e-5)
     assert "surface" in data["inputs"] and "units" in data
@@ -519,7 +519,7 @@ def test_passages_cut_counts_the_passages_a_cut_follows():
     passage (the start) belong to none."""
     from exudyn_bearing.studies.vibration import passages_cut
 
-    events = [{"entry_s": 0.010}, {"entry_s": 0.020}, {"entry_s": 0.030}, {"entry_s": 0.040}]
+    events = [{"edge_s": 0.010}, {"edge_s": 0.020}, {"edge_s": 0.030}, {"edge_s": 0.040}]
     assert passages_cut(events, [1e-5, 2e-5, 0.0101, 0.0102, 0.0305, 0.045]) == 3
     assert passages_cut(events, [0.005]) == 0 and passages_cut(events, []) == 0 and passages_cut([], [0.1]) == 0
     assert passages_cut(events[::-1], [0.0399]) == 1  # events in any order

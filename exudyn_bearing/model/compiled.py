@@ -405,6 +405,10 @@ class CompiledForces:
         return self._finish(np.ascontiguousarray(pos), np.ascontiguousarray(rot), np.ascontiguousarray(vel),
                             np.ascontiguousarray(omega), w)
 
+    def normal_loads(self, t, pos, rot, vel, omega):
+        """Normal loads (B, 2, Z) N (inner race first) of B node states (omega GLOBAL) at time ``t`` s."""
+        return self._contacts(t, pos, rot, vel, omega)["load"].copy()
+
     def _contacts(self, t, pos, rot, vel, omega, same_contacts=None):
         """Ball–race contacts of B states into (and returns) the work arrays of size B."""
         bsz = pos.shape[0]

@@ -218,6 +218,18 @@ class BearingConnector(ConnectorDiagnostics):
         _, _, parts = self._numpy_forces(t, pos, rot, vel, omega)
         return self._state(t, pos, rot, vel, omega, None, parts)
 
+    def normal_loads(self, t, q, q_t, chunk: int = 256):
+        """Normal loads (B, 2, Z) N of B recorded states (times ``t`` (B,) s, absolute coordinates and
+        velocities (B, 6 n_nodes)), with the surfaces; compiled where both races are bodies."""
+        t, q, q_t = np.asarray(t, dtype=float), np.atleast_2d(q), np.atleast_2d(q_t)
+        if self._compiled is None or self.layout["inner"] is None or self.layout["outer"] is None:
+            s = self.states(t, q, q_t)
+            return np.stack([s.inner_forces.normal_load, s.outer_forces.normal_load], axis=1)
+        pad = -len(t) % chunk  # one batch size for the kernels' work arrays
+        q, q_t = (np.pad(x, ((0, pad), (0, 0)), "edge") for x in (q, q_t))
+        return np.concatenate([self._compiled.normal_loads(0.0, *self._decode_batch(q[i:i + chunk], q_t[i:i + chunk]))
+                               for i in range(0, len(q), chunk)])[:len(t)]
+
     def _decode_batch(self, q, q_t):
         """:meth:`decode` for B states (B, 6 n_nodes), with GLOBAL angular velocities."""
         q, q_t = np.atleast_2d(q), np.atleast_2d(q_t)

@@ -215,6 +215,13 @@ def _vibration(args) -> int:
           f"{sv['reach_share']:.2g} of the approach, {sv['steps']} steps, "
           f"{sv['extra_steps']} more than planned; {sv['step_cuts']} step cuts, after {sv['passages_cut']} of the "
           f"{sv['passages']} passages)")
+    imp = result.impacts
+    if imp.get("entry_to_impact_s") is not None:
+        said = imp["entry_to_impact_estimate_s"]
+        print(f"  impacts ({imp['passages_read']} passages read from the contact load): entry to impact "
+              f"{1e3 * imp['entry_to_impact_s']:.3f} ms (median; the geometry, MODEL.md eq. 13.8: "
+              f"{'-' if said is None else f'{1e3 * said:.3f} ms'}), peak contact load {imp['peak_N']:.4g} N "
+              f"(largest {imp['largest_peak_N']:.4g} N), read at the {1e6 * sv['step_s']:.3g}-us step")
     est = result.error_estimate
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time): strongest "

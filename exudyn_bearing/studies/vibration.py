@@ -14,9 +14,9 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from contact.geometry import contact_path_radius
 from ..bearing import Bearing
 from ..setup import FROM_SETUP
+from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
            "sampled_signal", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
@@ -148,120 +148,6 @@ def spectral_peaks(freq, amp, count: int = 10, min_hz: float = 0.0, max_hz: floa
     return out
 
 
-def defect_reaches(bearing: Bearing, surface, loads) -> list:
-    """Per defect of ``surface``: [how deep a ball reaches into it (:meth:`contact.surface.Defect.reach`,
-    MODEL.md eq. 13.2–13.2c, R_x and R_y at the nominal contact angle), the race's largest Hertz
-    approach δ at the quasi-static ``loads``], m; a ball's pit is read against the outer race,
-    which it meets first."""
-    out = []
-    for d in surface.defects:
-        race = "outer" if d.race == "ball" else d.race
-        reach = d.reach(*(float(v) for v in bearing.curvature_radii(bearing.contact_angle, race)))
-        delta = float(max(loads.inner_deflection if race == "inner" else loads.outer_deflection))
-        out.append([reach, delta])
-    return out
-
-
-def defect_events(results, bearing: Bearing, surface) -> list:
-    """Each ball's passages over each defect (MODEL.md §13b): [{"defect": index, "ball": j,
-    "entry_s": the contact reaches the entry edge, where the ball starts to unload,
-    "exit_s": it reaches the exit edge}], in time order. The ball is struck on the exit side
-    and re-stressed at or before ``exit_s``: where the exit edge's circle (eq. 13.2) comes back
-    up to the depth the ball had sunk to, at most √(d (2 R_x − d)) before the edge (R_x the
-    contact's reduced radius along the rolling direction).
-
-    The contact's azimuth in the race frame is the ball's azimuth minus the race's turned angle
-    (the time integral of its recorded speed); edge crossings are interpolated between
-    recorded states. A pit on a ball has its events from the recorded states:
-    :func:`ball_defect_events`."""
-    t = np.asarray(results.time)
-    psi = np.unwrap(results.ball_position_angle, axis=0)
-    turned = {"inner": _integral(t, results.inner_speed), "outer": _integral(t, results.outer_speed)}
-    events = []
-    for i, d in enumerate(surface.defects):
-        if d.race == "ball":
-            continue
-        rho = contact_path_radius(bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle, d.race)
-        half = 0.5 * d.length / rho  # the defect's half angle on the contact path
-        for j in range(psi.shape[1]):
-            rel = psi[:, j] - turned[d.race] - math.radians(d.angle_deg)
-            forward = rel[-1] >= rel[0]  # the contact runs over the race in this sense
-            first, second = (-half, half) if forward else (half, -half)
-            for n in range(int(np.floor((rel.min() - half) / (2 * math.pi))),
-                           int(np.ceil((rel.max() + half) / (2 * math.pi))) + 1):
-                exits = _crossings(t, rel, 2 * math.pi * n + second)
-                for entry in _crossings(t, rel, 2 * math.pi * n + first):
-                    later = [x for x in exits if x > entry]
-                    if later:
-                        events.append({"defect": i, "ball": j, "entry_s": entry, "exit_s": later[0]})
-    return sorted(events, key=lambda e: e["entry_s"])
-
-
-def ball_defect_events(connector, time, q, q_t) -> list:
-    """Each ball pit's passages under its ball's two contacts (MODEL.md eq. 13.3): [{"defect":
-    index in the surface's defects, "ball": j, "race": "inner" | "outer", "entry_s": the
-    contact reaches the pit's first edge on its path, "exit_s": it leaves the second}], in
-    time order. From the recorded states (``time`` (T,) s, absolute coordinates and velocities
-    (T, 6 n_nodes), e.g. ``handle.States(mbs)``): the pit's centre's distance from the contact
-    along its path (:func:`contact.ball_surface.pit_paths`) against half the chord it crosses
-    the pit on, interpolated between states."""
-    from contact.ball_surface import pit_paths
-
-    surface, record = connector.surface, connector.terms.surface
-    pits = [i for i, d in enumerate(surface.defects if surface is not None else ()) if d.race == "ball"]
-    if not pits:
-        return []
-    time = np.asarray(time, dtype=float)
-    kin, rot = connector.contact_kinematics(time, q, q_t)
-    frames = [v.reshape(len(time), 2, connector.z, 3) for v in (kin.normal, kin.rolling, kin.transverse)]
-    events = []
-    for row, i in enumerate(pits):  # the record's pit rows follow the surface's ball defects
-        j = surface.defects[i].ball
-        for k, race in enumerate(("inner", "outer")):
-            along, chord = pit_paths(record, rot[:, j], *(f[:, k, j] for f in frames),
-                                     connector.bearing.ball_radius)[:, row]
-            u = np.where(chord > 0.0, along / np.where(chord > 0.0, 0.5 * chord, 1.0), np.nan)
-            events += [{"defect": i, "ball": j, "race": race, "entry_s": a, "exit_s": b}
-                       for a, b in _passages(time, u)]
-    return sorted(events, key=lambda e: e["entry_s"])
-
-
-def passages_cut(events, cut_times) -> int:
-    """How many of the defect passages ``events`` (dicts with ``entry_s``) are followed by a
-    step cut (``cut_times``, s: end times of failed step attempts) before the next passage's
-    entry (any defect; the last one's up to the end of the run; MODEL.md §13c). A strike's
-    cut falls after its exit, in the ringing it starts (~0.1 ms on the CWRU notch)."""
-    cuts = np.sort(np.asarray(cut_times, dtype=float))
-    entries = np.sort([float(e["entry_s"]) for e in events])
-    # the cuts before each entry and before the end: a passage holds those in between
-    return int(np.count_nonzero(np.diff(np.searchsorted(cuts, np.append(entries, np.inf))) > 0))
-
-
-def _passages(t, u):
-    """(entry, exit) times where u (the position over a defect in its half-lengths, NaN off
-    its path) passes through [-1, 1]: each crossing of an edge towards the inside enters, one
-    towards the outside exits; crossings interpolated linearly between samples."""
-    crossings = []
-    for level in (-1.0, 1.0):
-        s = u - level
-        k = np.flatnonzero(np.isfinite(s[:-1]) & np.isfinite(s[1:]) & (np.signbit(s[:-1]) != np.signbit(s[1:])))
-        for i in k:
-            inward = (u[i + 1] - u[i]) * level < 0.0  # moving from beyond this edge towards the middle
-            crossings.append((float(t[i] + (t[i + 1] - t[i]) * s[i] / (s[i] - s[i + 1])), inward))
-    crossings.sort()
-    return [(a, b) for (a, into), (b, out) in zip(crossings, crossings[1:]) if into and not out]
-
-
-def _integral(t, rate):
-    return np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(t))])
-
-
-def _crossings(t, x, level):
-    s = x - level
-    k = np.flatnonzero(np.signbit(s[:-1]) != np.signbit(s[1:]))
-    return [float(t[i] + (t[i + 1] - t[i]) * s[i] / (s[i] - s[i + 1])) for i in k]
-
-
 @dataclass
 class VibrationResult:
     """One vibration run (SI units; see :func:`vibration`)."""
@@ -288,19 +174,21 @@ class VibrationResult:
     #: deepest defect's reach / the ball's approach; >= 0.5: the strike step)
     solver: dict = field(default_factory=dict)
     error_estimate: dict | None = None  #: see :func:`vibration`
+    #: the passages as the contact load shows them (:func:`~exudyn_bearing.studies.passages.impact_summary`)
+    impacts: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
         return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
                 "spectrum_peaks_Hz": self.spectrum_peaks, "defect_events": self.defect_events,
                 "sample_rate_Hz": self.sample_rate, "envelope_band_Hz": list(self.band),
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
-                "solver": self.solver, "error_estimate": self.error_estimate,
+                "solver": self.solver, "error_estimate": self.error_estimate, "impacts": self.impacts,
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
-                          "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s", "sample_rate_Hz": "Hz",
+                          "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s; peak_N, load_before_N N", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
                           "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -; "
                                     "defect_reach_m [reach, approach] m",
-                          "error_estimate": "Hz, %, pp, s",
+                          "error_estimate": "Hz, %, pp, s", "impacts": "s; N",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
@@ -395,8 +283,11 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
     events = defect_events(results, bearing, surface) if surface.defects else []
-    if any(d.race == "ball" for d in surface.defects):  # a pit's passages: from the balls' recorded rotations
-        events = sorted(events + ball_defect_events(handle.connector, *handle.States(mbs)), key=lambda e: e["entry_s"])
+    if surface.defects:  # the load at every step: when each contact unloads and is struck
+        states = handle.States(mbs)
+        if any(d.race == "ball" for d in surface.defects):  # a pit's passages: from the balls' recorded rotations
+            events = sorted(events + ball_defect_events(handle.connector, *states), key=lambda e: e["edge_s"])
+        events = read_impacts(handle.connector, events, *states)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
@@ -410,7 +301,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "newton_iterations": int(info.newton_iterations), "strike_number": strike,
                            "reach_share": share,
                            "defect_reach_m": defect_reaches(bearing, surface, loads) if loads is not None else [],
-                           "surface_start": (handle.connector.surface_start or {}).get("message")})
+                           "surface_start": (handle.connector.surface_start or {}).get("message")},
+                          impacts=impact_summary(events))
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle,
