@@ -303,7 +303,7 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
     r_x = geometry.rolling_radius(ball_diameter, pitch_diameter, kin.contact_angle, 2.0 * race - 1.0)
     h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)
     rate = kin.penetration_rate + slope * kin.orbit_rate
-    tilt = slope / kin.point_radius
+    tilt = slope / kin.orbit_radius  # dh/dθ over the ball centre's radius (eq. 13.7)
     if terms.surface.material:
         if ball_rotation is None:
             raise ValueError("with_surface: a ball defect needs ball_rotation, ball_omega, race_axis and race_omega")

@@ -23,8 +23,9 @@ per contact through :func:`contact.terms.surface_height` (stage 0 of the extensi
   ramp of length e: d min(1, x/e, (L − x)/e)). The ball unloads gradually past the entry
   edge and is re-stressed at the exit edge; over a notch shorter than 2√(d (2 R_x − d)) it
   never reaches the bottom (its reach is s(L/2), :meth:`Defect.reach`). The contact normal
-  tilts with the slope of the centre's path: the load acts along −(n + (dh/ds) t1), through
-  the ball centre (eq. 13.7; the kernels apply it, this module gives the slope).
+  tilts with the centre's path: the load acts along −(n + (dh/dθ)/ρ_c t1), ρ_c the ball
+  centre's radius — the line from the edge to the centre — through the ball centre (eq. 13.7;
+  the kernels apply it, this module gives dh/dθ).
 
 Pits and waviness on a ball, which turn with the ball's material, are in
 :mod:`contact.ball_surface` (eq. 13.3, 13.6).

@@ -326,9 +326,11 @@ def test_surface_start_is_settled_from_the_first_step():
 def test_over_a_notch_edge_the_load_tilts_with_the_ball_centres_path():
     """Ball 0's outer contact 0.2 mm inside the exit edge of a 1-mm, 50-um notch (traction
     off, 1300 N axial): the ball rests on the edge, and the load acts along the line from
-    the edge to the ball centre, tilted against the rolling direction t1 by the slope of the
-    centre's path (eq. 13.2, 13.7): F.t1 / Q = -u / sqrt(R_x² - u²), R_x = r (d_m + D cos a)/d_m
-    at the contact's angle (the numpy path); the compiled paths' forces equal it."""
+    the edge to the ball centre, tilted against the rolling direction t1 by the centre's path
+    (eq. 13.2, 13.7): its drop s(ρ_p θ) over the centre's own arc ρ_c θ, F.t1 / Q =
+    -(ρ_p/ρ_c) u / sqrt(R_x² - u²), R_x = r (d_m + D cos a)/d_m at the contact's angle — at a
+    0° contact u/r to first order, the edge-to-centre line (the numpy path); the compiled
+    paths' forces equal it."""
     from contact.ballrace import ContactLaw
     from tests.helpers import _both_paths, _scene
 
@@ -346,7 +348,7 @@ def test_over_a_notch_edge_the_load_tilts_with_the_ball_centres_path():
     edge = (kin.azimuth[0] - (psi - (0.5 * length - u) / rho) + 0.5 * length / kin.point_radius[0]) * kin.point_radius[0]
     u_here = length - edge  # the contact's distance from the exit edge
     assert u_here == pytest.approx(u, rel=0.05)
-    want = -u_here / math.sqrt(r_x ** 2 - u_here ** 2)
+    want = -(kin.point_radius[0] / kin.orbit_radius[0]) * u_here / math.sqrt(r_x ** 2 - u_here ** 2)
     got = (forces.force[0] @ kin.rolling[0]) / forces.normal_load[0]
     assert got == pytest.approx(want, rel=1e-3)
     single, fast, ref = _both_paths(con, q, qt)

@@ -127,7 +127,9 @@ def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
     tilt = 0.0  # dh/ds along t1: the surface's slope tilts the contact force (eq. 13.7)
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
-        tilt = height_slope / rho_p
+        # over the ball centre's radius: the edge-to-centre line, the gradient of the approach
+        # δ + h(θ) with θ the centre's azimuth (eq. 13.7)
+        tilt = height_slope / rho_c
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # its own surface (13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
         pit, pit_rate, pit_tilt = ball_surface_height(
