@@ -75,16 +75,17 @@ def pit_paths(surface: SurfaceRecord, rotation, normal, rolling, transverse, bal
 
 @njit(cache=True, error_model="numpy")
 def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius):
-    """(h m, dh/dt m/s, dh/ds) of the pits (eq. 13.3) and the waviness (eq. 13.6) of ``ball`` at
-    one of its contacts, s the contact's position along t1 (the slope that tilts the contact
-    force, eq. 13.7):
+    """(h m, dh/dt m/s, G (3,) m/rad) of the pits (eq. 13.3) and the waviness (eq. 13.6) of
+    ``ball`` at one of its contacts: G = ∂h/∂φ, the height's change per radian the ball turns
+    relative to the contact frame (about each global axis), so dh/dt = G·ω_rel and the contact's
+    generalized forces are −Q G on the ball's rotation and, as the frame turns with the ball
+    centre's azimuth, −Q (e·G)/ρ_c along t1 (eq. 13.7b).
     ``rotation`` the ball's body-to-global rotation (3, 3); the contact's ``normal`` n,
-    ``rolling`` t1 and ``transverse`` t2 (global unit vectors, (3,)); ``relative_omega`` the
+    ``rolling`` t1 and ``transverse`` t2 (global unit vectors, (3,)); ``relative_omega`` ω_rel the
     ball's angular velocity relative to the contact frame, which turns with the ball's orbit
     (ω_ball − Ω_orbit e_axis, rad/s, (3,)); ``ball_radius`` r and R_x in m."""
     h = 0.0
-    rate = 0.0
-    tilt = 0.0  # dh/ds, s the contact's position along t1 on the ball (eq. 13.7)
+    g = np.zeros(3)
     pits = surface.ball_defects
     for i in range(pits.shape[0]):
         if int(pits[i, 0]) != ball:
@@ -96,66 +97,58 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
         if x <= 0.0 or x >= chord:
             continue
         drop, slope = path_drop(x, chord, pits[i, 5], min(pits[i, 6], 0.5 * chord), rolling_radius)
-        # d(along)/dt: d turns with the ball's spin relative to the contact frame
-        wx, wy, wz = relative_omega[0], relative_omega[1], relative_omega[2]
-        ddx, ddy, ddz = wy * d[2] - wz * d[1], wz * d[0] - wx * d[2], wx * d[1] - wy * d[0]
-        a_t = ddx * rolling[0] + ddy * rolling[1] + ddz * rolling[2]
-        c_t = ddx * normal[0] + ddy * normal[1] + ddz * normal[2]
         h -= drop
-        rate -= slope * ball_radius * (a_t * c - a * c_t) / (a * a + c * c)
-        tilt += slope  # the pit's centre is at 'along' from the contact: d(along)/ds = -1
+        # d turns by dφ x d: d(along) = r (c d(d·t1) − a d(d·n)) / (a² + c²) = dφ · r d x (c t1 − a n) / (a² + c²)
+        f = -slope * ball_radius / (a * a + c * c)
+        vx, vy, vz = c * rolling[0] - a * normal[0], c * rolling[1] - a * normal[1], c * rolling[2] - a * normal[2]
+        g[0] += f * (d[1] * vz - d[2] * vy)
+        g[1] += f * (d[2] * vx - d[0] * vz)
+        g[2] += f * (d[0] * vy - d[1] * vx)
     waves = surface.ball_waviness
-    if waves.shape[0] == 0:
-        return h, rate, tilt
-    # the contact direction in the ball's body frame, n_b = Aᵀ n, and its rate -Aᵀ (w_rel x n)
-    wx, wy, wz = relative_omega[0], relative_omega[1], relative_omega[2]
-    mx = wy * normal[2] - wz * normal[1]
-    my = wz * normal[0] - wx * normal[2]
-    mz = wx * normal[1] - wy * normal[0]
-    nb = np.empty(3)
-    nd = np.empty(3)
-    ns = np.empty(3)  # d n_b / ds: the contact moved by ds along t1 over the ball
-    for r in range(3):
-        nb[r] = rotation[0, r] * normal[0] + rotation[1, r] * normal[1] + rotation[2, r] * normal[2]
-        nd[r] = -(rotation[0, r] * mx + rotation[1, r] * my + rotation[2, r] * mz)
-        ns[r] = (rotation[0, r] * rolling[0] + rotation[1, r] * rolling[1] + rotation[2, r] * rolling[2]) / ball_radius
-    for i in range(waves.shape[0]):
-        if int(waves[i, 0]) != ball:
-            continue
-        z0, z1, z2 = waves[i, 4], waves[i, 5], waves[i, 6]
-        a0, a1, a2 = waves[i, 7], waves[i, 8], waves[i, 9]
-        y0, y1, y2 = a1 * z2 - a2 * z1, a2 * z0 - a0 * z2, a0 * z1 - a1 * z0  # axis x zero
-        x = nb[0] * z0 + nb[1] * z1 + nb[2] * z2
-        y = nb[0] * y0 + nb[1] * y1 + nb[2] * y2
-        x_t = nd[0] * z0 + nd[1] * z1 + nd[2] * z2
-        y_t = nd[0] * y0 + nd[1] * y1 + nd[2] * y2
-        x_s = ns[0] * z0 + ns[1] * z1 + ns[2] * z2
-        y_s = ns[0] * y0 + ns[1] * y1 + ns[2] * y2
-        arg = waves[i, 1] * math.atan2(y, x) + waves[i, 3]
-        h += waves[i, 2] * math.cos(arg)
-        rate -= waves[i, 2] * waves[i, 1] * math.sin(arg) * (x * y_t - y * x_t) / (x * x + y * y)
-        tilt -= waves[i, 2] * waves[i, 1] * math.sin(arg) * (x * y_s - y * x_s) / (x * x + y * y)
-    return h, rate, tilt
+    if waves.shape[0] > 0:
+        # the contact direction in the ball's body frame n_b = Aᵀ n: turning the ball by dφ moves
+        # it by −Aᵀ (dφ x n), so d(n_b·z) = −dφ · (n x A z)
+        nb = np.empty(3)
+        for r in range(3):
+            nb[r] = rotation[0, r] * normal[0] + rotation[1, r] * normal[1] + rotation[2, r] * normal[2]
+        for i in range(waves.shape[0]):
+            if int(waves[i, 0]) != ball:
+                continue
+            z = np.array([waves[i, 4], waves[i, 5], waves[i, 6]])
+            ax = np.array([waves[i, 7], waves[i, 8], waves[i, 9]])
+            y = np.array([ax[1] * z[2] - ax[2] * z[1], ax[2] * z[0] - ax[0] * z[2], ax[0] * z[1] - ax[1] * z[0]])
+            x_b, y_b = nb[0] * z[0] + nb[1] * z[1] + nb[2] * z[2], nb[0] * y[0] + nb[1] * y[1] + nb[2] * y[2]
+            zg, yg = rotation @ z, rotation @ y  # the longitude's zero and its quarter, global
+            arg = waves[i, 1] * math.atan2(y_b, x_b) + waves[i, 3]
+            h += waves[i, 2] * math.cos(arg)
+            # dh = −A k sin(arg) (x dy − y dx)/(x² + y²), dx = −dφ·(n x zg), dy = −dφ·(n x yg)
+            f = waves[i, 2] * waves[i, 1] * math.sin(arg) / (x_b * x_b + y_b * y_b)
+            g[0] += f * (x_b * (normal[1] * yg[2] - normal[2] * yg[1]) - y_b * (normal[1] * zg[2] - normal[2] * zg[1]))
+            g[1] += f * (x_b * (normal[2] * yg[0] - normal[0] * yg[2]) - y_b * (normal[2] * zg[0] - normal[0] * zg[2]))
+            g[2] += f * (x_b * (normal[0] * yg[1] - normal[1] * yg[0]) - y_b * (normal[0] * zg[1] - normal[1] * zg[0]))
+    rate = g[0] * relative_omega[0] + g[1] * relative_omega[1] + g[2] * relative_omega[2]
+    return h, rate, g
 
 
 @njit(cache=True, error_model="numpy")
 def _ball_heights(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius,
                   out):
     for i in range(ball.shape[0]):
-        out[0, i], out[1, i], out[2, i] = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i],
-                                                      transverse[i], relative_omega[i], ball_radius,
-                                                      rolling_radius[i])
+        out[0, i], out[1, i], g = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
+                                              relative_omega[i], ball_radius, rolling_radius[i])
+        out[2:, i] = g
 
 
 def ball_heights(surface: SurfaceRecord, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                  rolling_radius) -> np.ndarray:
     """:func:`ball_height` for n contacts (the numpy path): ``ball`` (n,), ``rotation``
-    (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s, dh/ds), (3, n)."""
+    (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s, G_x, G_y, G_z
+    m/rad), (5, n)."""
     def arr(x):
         return np.ascontiguousarray(x, dtype=float)
 
     ball = np.ascontiguousarray(ball, dtype=np.int64)
-    out = np.empty((3, ball.shape[0]))
+    out = np.empty((5, ball.shape[0]))
     _ball_heights(surface, ball, arr(rotation), arr(normal), arr(rolling), arr(transverse), arr(relative_omega),
                   float(ball_radius), arr(np.broadcast_to(rolling_radius, ball.shape)), out)
     return out

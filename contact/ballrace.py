@@ -288,6 +288,8 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
         moment = moment + rolling[:, None] * kin.transverse
     if kin.surface_slope is not None:  # the tilted common normal, through the ball centre (eq. 13.7)
         force = force - (load * kin.surface_slope)[:, None] * kin.rolling
+    if kin.surface_turn is not None:  # the ball's own surface turns it (eq. 13.7b)
+        moment = moment - load[:, None] * kin.surface_turn
     return ContactForces(force, moment, load, fx, fy, mz, h, p_max, heat, rolling, rolling_loss, damping_loss)
 
 
@@ -312,5 +314,9 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
                            ball_omega - orbit[:, None] * race_axis, 0.5 * ball_diameter, r_x)
         h = h + pit[0]
         rate = rate + pit[1]
-        tilt = tilt + np.where(pit[0] != 0.0, pit[2], 0.0)
+        turn = pit[2:].T
+        # the contact frame turns with the centre's azimuth: −Q (e·G)/ρ_c along t1 (eq. 13.7b)
+        tilt = tilt - np.einsum("ij,ij->i", turn, race_axis) / kin.orbit_radius
+        return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt,
+                       surface_turn=turn)
     return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt)

@@ -77,6 +77,8 @@ class ContactKinematics:
     orbit_rate: np.ndarray = None
     #: slope dh/ds of the surfaces' height along t1 at the contact (MODEL.md eq. 13.7); None: flat
     surface_slope: np.ndarray = None
+    #: G = ∂h/∂φ (n, 3) m/rad of the ball's own surface: the load turns the ball by −Q G (eq. 13.7b)
+    surface_turn: np.ndarray = None
 
 
 def ball_race_kinematics(ball_centre, ball_velocity, ball_omega, race_origin, race_rotation,

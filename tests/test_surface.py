@@ -145,7 +145,7 @@ def test_long_spall_reaches_its_depth_and_its_edge_ramps():
 
 
 def _pit_heights(pit, angle, spin, across=0.0, r_x=R):
-    """(h, dh/dt) of ``pit`` (a Defect, or a SurfaceModel) on ball 0 (its start circle: zero
+    """(h, dh/dt, G) of ``pit`` (a Defect, or a SurfaceModel) on ball 0 (its start circle: zero
     e_x, spin axis e_z, the default) at a contact with n = e_x, t1 = e_y, t2 = e_z, the ball
     turned by ``angle`` (rad, (n,)) about e_z and then by ``across`` about -e_y, spinning at
     ``spin`` rad/s about e_z."""
@@ -154,8 +154,9 @@ def _pit_heights(pit, angle, spin, across=0.0, r_x=R):
     rot = rotation_matrices(np.stack([np.zeros(n), np.zeros(n), np.asarray(angle)], axis=1))
     rot = rotation_matrices(np.array([[0.0, -across, 0.0]])) @ rot
     e = np.broadcast_to(np.eye(3)[:, None, :], (3, n, 3))
-    return ball_heights(record, np.zeros(n, dtype=int), rot, e[0], e[1], e[2],
-                        np.broadcast_to([0.0, 0.0, spin], (n, 3)), R, np.full(n, r_x))
+    out = ball_heights(record, np.zeros(n, dtype=int), rot, e[0], e[1], e[2],
+                       np.broadcast_to([0.0, 0.0, spin], (n, 3)), R, np.full(n, r_x))
+    return out[0], out[1], out[2:].T  # h, dh/dt, G = dh/dphi (n, 3)
 
 
 def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_crosses():
@@ -166,7 +167,7 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
     pit = Defect("ball", 0.0, diameter, 0.28e-3, ball=0)
     x = np.linspace(-0.6e-3, 0.6e-3, 601)  # arc position of the pit's centre from the contact
     for across, chord in ((0.0, diameter), (0.3e-3, 0.8e-3)):
-        h, rate, tilt = _pit_heights(pit, x / R, spin, across / R, r_x)
+        h, rate, grad = _pit_heights(pit, x / R, spin, across / R, r_x)
         along = R * np.arctan2(np.sin(x / R), math.cos(across / R) * np.cos(x / R))  # the arc seen from the contact
         u = np.clip(0.5 * chord - np.abs(along), 0.0, None)
         want = np.where(np.abs(along) < 0.5 * chord, -(r_x - np.sqrt(r_x * r_x - u * u)), 0.0)
@@ -174,8 +175,10 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
         smooth = (np.abs(x) < 0.5 * chord - 4e-6) & (np.abs(x) > 4e-6)
         numeric = np.gradient(h, x / R / spin)  # the ball turns by spin dt
         np.testing.assert_allclose(rate[smooth], numeric[smooth], rtol=2e-2, atol=0)
-        # eq. 13.7: the slope under the contact, s its position along t1 (the pit is at -s)
-        np.testing.assert_allclose(tilt[smooth], -np.gradient(h, x)[smooth], rtol=2e-2, atol=0)
+        # eq. 13.7b: G the height's change per radian the ball turns; about the turning axis
+        # (e_z, then tipped by 'across' about -e_y) it is dh/d(angle)
+        axis = rotation_matrices(np.array([[0.0, -across / R, 0.0]]))[0] @ np.array([0.0, 0.0, 1.0])
+        np.testing.assert_allclose((grad @ axis)[smooth], np.gradient(h, x / R)[smooth], rtol=2e-2, atol=0)
     far, _, _ = _pit_heights(pit, np.array([math.pi]), spin)
     assert far[0] == 0.0
     # angle_deg turns the pit about the start spin axis: 90 deg ahead, met after the ball turns back by 90 deg
@@ -191,13 +194,14 @@ def test_ball_waviness_is_the_fourier_sum_over_the_contacts_longitude_on_the_bal
     rows = ((0, 6, 0.3e-6, 20.0), (0, 3, 1e-6, -60.0), (1, 5, 2e-6, 0.0))
     phi = np.linspace(-math.pi, math.pi, 721)
     spin = 200.0
-    h, rate, tilt = _pit_heights(SurfaceModel(waviness=Waviness(ball=rows)), -phi, spin)
+    h, rate, grad = _pit_heights(SurfaceModel(waviness=Waviness(ball=rows)), -phi, spin)
     want = 0.3e-6 * np.cos(6 * phi + math.radians(20.0)) + 1e-6 * np.cos(3 * phi - math.radians(60.0))
     np.testing.assert_allclose(h, want, rtol=0, atol=1e-15)
     numeric = np.gradient(h, -phi / spin)  # the ball turns by spin dt: phi falls
     np.testing.assert_allclose(rate[1:-1], numeric[1:-1], rtol=0, atol=2e-3 * np.max(np.abs(rate)))
-    # the contact moved by ds along t1 = e_y reaches longitude phi + ds / r
-    np.testing.assert_allclose(tilt[1:-1], np.gradient(h, R * phi)[1:-1], rtol=0, atol=2e-3 * np.max(np.abs(tilt)))
+    # the ball turned by d(-phi) about e_z: G_z = dh/d(-phi)
+    np.testing.assert_allclose(grad[1:-1, 2], -np.gradient(h, phi)[1:-1], rtol=0,
+                               atol=2e-3 * np.max(np.abs(grad[:, 2])))
 
 
 def test_defect_across_the_raceway_and_turning_with_its_race():

@@ -125,6 +125,7 @@ def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
     orbit_rel = (orx * t1x + ory * t1y + orz * t1z) / rho_c
     entrainment = -0.5 * u_x - orbit_rel * rho_p
     tilt = 0.0  # dh/ds along t1: the surface's slope tilts the contact force (eq. 13.7)
+    turn = (0.0, 0.0, 0.0)  # G = ∂h/∂φ of the ball's own surface, m/rad: −Q G on the ball (13.7b)
     if height_slope != 0.0:  # the surface under the moving contact rises or falls
         rate += height_slope * orbit_rel
         # over the ball centre's radius: the edge-to-centre line, the gradient of the approach
@@ -132,16 +133,18 @@ def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
         tilt = height_slope / rho_c
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # its own surface (13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
-        pit, pit_rate, pit_tilt = ball_surface_height(
+        pit, pit_rate, g = ball_surface_height(
             terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
             (wbx - orbit * R[0, 2], wby - orbit * R[1, 2], wbz - orbit * R[2, 2]), ball_radius, r_x)
-        if pit != 0.0:
+        if pit != 0.0 or g[0] != 0.0 or g[1] != 0.0 or g[2] != 0.0:
             pen += pit
             rate += pit_rate
-            tilt += pit_tilt
+            # the contact frame turns with the centre's azimuth: −Q (e·G)/ρ_c along t1 (eq. 13.7b)
+            tilt -= (g[0] * R[0, 2] + g[1] * R[1, 2] + g[2] * R[2, 2]) / rho_c
+            turn = (g[0], g[1], g[2])
     rolling_rate = (wbx - wr[0]) * t2x + (wby - wr[1]) * t2y + (wbz - wr[2]) * t2z
     return (pen, rate, (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z), u_x, u_y, spin, entrainment, rolling_rate,
-            tilt, r_x)
+            tilt, r_x, turn)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -193,7 +196,7 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
     ib = idx // (2 * z)
     k = (idx // z) % 2
     j = idx % z
-    pen, rate, normal, t1, t2, u_x, u_y, spin, entrainment, rolling_rate, tilt, r_x = _contact_kinematics(
+    pen, rate, normal, t1, t2, u_x, u_y, spin, entrainment, rolling_rate, tilt, r_x, turn = _contact_kinematics(
         ib, k, j, balls, frames, geometry, terms)
     out.penetration[ib, k, j] = pen
     q, ell, second, radius, r_y = _normal_load(pen, rate, r_x, geometry.conformity[k], geometry, law)
@@ -231,6 +234,11 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
         force[ib, k, j, 0] = Fx - q * tilt * t1x
         force[ib, k, j, 1] = Fy - q * tilt * t1y
         force[ib, k, j, 2] = Fz - q * tilt * t1z
+    if q > 0.0 and (turn[0] != 0.0 or turn[1] != 0.0 or turn[2] != 0.0):
+        # the ball's own surface turns the ball: -Q ∂h/∂φ (eq. 13.7b)
+        moment[ib, k, j, 0] -= q * turn[0]
+        moment[ib, k, j, 1] -= q * turn[1]
+        moment[ib, k, j, 2] -= q * turn[2]
 
 
 @njit(cache=True, error_model="numpy")
