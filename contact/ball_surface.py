@@ -24,7 +24,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .surface import SurfaceRecord, path_drop
+from .surface import SurfaceRecord, path_drop, rim_drop
 
 __all__ = ["ball_height", "ball_heights", "pit_path", "pit_paths"]
 
@@ -74,9 +74,10 @@ def pit_paths(surface: SurfaceRecord, rotation, normal, rolling, transverse, bal
 
 
 @njit(cache=True, error_model="numpy")
-def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius):
+def ball_height(surface, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+                rolling_radius):
     """(h m, dh/dt m/s, G (3,) m/rad) of the pits (eq. 13.3) and the waviness (eq. 13.6) of
-    ``ball`` at one of its contacts: G = ∂h/∂φ, the height's change per radian the ball turns
+    ``ball`` at its contact with ``race`` (0 inner, 1 outer): G = ∂h/∂φ, the height's change per radian the ball turns
     relative to the contact frame (about each global axis), so dh/dt = G·ω_rel and the contact's
     generalized forces are −Q G on the ball's rotation and, as the frame turns with the ball
     centre's azimuth, −Q (e·G)/ρ_c along t1 (eq. 13.7b).
@@ -93,17 +94,34 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
         d, c, a, along, chord = pit_path(pits[i], rotation, normal, rolling, transverse, ball_radius)
         if chord <= 0.0:
             continue
-        x = along + 0.5 * chord
-        if x <= 0.0 or x >= chord:
-            continue
-        drop, slope = path_drop(x, chord, pits[i, 5], min(pits[i, 6], 0.5 * chord), rolling_radius)
+        half = 0.5 * pits[i, 4]
+        e = d[0] * transverse[0] + d[1] * transverse[1] + d[2] * transverse[2]
+        across = ball_radius * math.atan2(e, c)
+        if pits[i, 6] > 0.0:  # edge ramps: along the chord the path crosses (eq. 13.3)
+            x = along + 0.5 * chord
+            if x <= 0.0 or x >= chord:
+                continue
+            drop, slope = path_drop(x, chord, pits[i, 5], min(pits[i, 6], 0.5 * chord), rolling_radius)
+            s_x, s_y = -slope, 0.0  # (the contact sits at −along from the pit's centre)
+        else:  # a sharp round pit: the ball rests on its rim in both directions (eq. 13.3b)
+            if along * along + across * across >= half * half:
+                continue
+            drop, s_x, s_y = rim_drop(-along, -across, half, half, pits[i, 5], rolling_radius, pits[i, 7 + race])
         h -= drop
-        # d turns by dφ x d: d(along) = r (c d(d·t1) − a d(d·n)) / (a² + c²) = dφ · r d x (c t1 − a n) / (a² + c²)
-        f = -slope * ball_radius / (a * a + c * c)
+        # d turns by dφ x d: d(along) = dφ · r d x (c t1 − a n)/(a² + c²), d(across) likewise with
+        # t2 and e; the contact sits at (−along, −across) from the pit: dh = s_x d(along) + s_y d(across)
+        f = s_x * ball_radius / (a * a + c * c)
         vx, vy, vz = c * rolling[0] - a * normal[0], c * rolling[1] - a * normal[1], c * rolling[2] - a * normal[2]
         g[0] += f * (d[1] * vz - d[2] * vy)
         g[1] += f * (d[2] * vx - d[0] * vz)
         g[2] += f * (d[0] * vy - d[1] * vx)
+        if s_y != 0.0:
+            f = s_y * ball_radius / (e * e + c * c)
+            vx, vy, vz = (c * transverse[0] - e * normal[0], c * transverse[1] - e * normal[1],
+                          c * transverse[2] - e * normal[2])
+            g[0] += f * (d[1] * vz - d[2] * vy)
+            g[1] += f * (d[2] * vx - d[0] * vz)
+            g[2] += f * (d[0] * vy - d[1] * vx)
     waves = surface.ball_waviness
     if waves.shape[0] > 0:
         # the contact direction in the ball's body frame n_b = Aᵀ n: turning the ball by dφ moves
@@ -131,24 +149,25 @@ def ball_height(surface, ball, rotation, normal, rolling, transverse, relative_o
 
 
 @njit(cache=True, error_model="numpy")
-def _ball_heights(surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius, rolling_radius,
-                  out):
+def _ball_heights(surface, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+                  rolling_radius, out):
     for i in range(ball.shape[0]):
-        out[0, i], out[1, i], g = ball_height(surface, ball[i], rotation[i], normal[i], rolling[i], transverse[i],
-                                              relative_omega[i], ball_radius, rolling_radius[i])
+        out[0, i], out[1, i], g = ball_height(surface, ball[i], race[i], rotation[i], normal[i], rolling[i],
+                                              transverse[i], relative_omega[i], ball_radius, rolling_radius[i])
         out[2:, i] = g
 
 
-def ball_heights(surface: SurfaceRecord, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+def ball_heights(surface: SurfaceRecord, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                  rolling_radius) -> np.ndarray:
-    """:func:`ball_height` for n contacts (the numpy path): ``ball`` (n,), ``rotation``
+    """:func:`ball_height` for n contacts (the numpy path): ``ball`` and ``race`` (n,), ``rotation``
     (n, 3, 3), the vectors (n, 3), ``rolling_radius`` (n,). Rows (h m, dh/dt m/s, G_x, G_y, G_z
     m/rad), (5, n)."""
     def arr(x):
         return np.ascontiguousarray(x, dtype=float)
 
     ball = np.ascontiguousarray(ball, dtype=np.int64)
+    race = np.ascontiguousarray(np.broadcast_to(race, ball.shape), dtype=np.int64)
     out = np.empty((5, ball.shape[0]))
-    _ball_heights(surface, ball, arr(rotation), arr(normal), arr(rolling), arr(transverse), arr(relative_omega),
+    _ball_heights(surface, ball, race, arr(rotation), arr(normal), arr(rolling), arr(transverse), arr(relative_omega),
                   float(ball_radius), arr(np.broadcast_to(rolling_radius, ball.shape)), out)
     return out

@@ -310,7 +310,7 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
         if ball_rotation is None:
             raise ValueError("with_surface: a ball defect needs ball_rotation, ball_omega, race_axis and race_omega")
         orbit = np.einsum("ij,ij->i", race_omega, race_axis) + kin.orbit_rate
-        pit = ball_heights(terms.surface, ball, ball_rotation, kin.normal, kin.rolling, kin.transverse,
+        pit = ball_heights(terms.surface, ball, race, ball_rotation, kin.normal, kin.rolling, kin.transverse,
                            ball_omega - orbit[:, None] * race_axis, 0.5 * ball_diameter, r_x)
         h = h + pit[0]
         rate = rate + pit[1]

@@ -151,7 +151,7 @@ class Defect:
         reduced radius R_x along the rolling direction and ``across_radius`` R_y across the
         groove, m (:func:`contact.geometry.curvature_radii`): a rectangle min(d, s_x(L/2),
         s_y(W/2)) (eq. 13.2, 13.2b), an ellipse min(d, (L/2)²/(2 R_x), (W/2)²/(2 R_y)) (13.2c)."""
-        if self.shape == "ellipse":
+        if self.shape == "ellipse" or (self.race == "ball" and self.edge == 0.0):  # (a ball's pit is round)
             half = 0.5 * (self.length if self.width is None else self.width)
             return min(self.depth, 0.125 * self.length ** 2 / radius, 0.5 * half * half / across_radius)
         across = math.inf if self.width is None else sag(0.5 * self.width, across_radius)
@@ -248,9 +248,10 @@ class SurfaceRecord(NamedTuple):
     defects: np.ndarray
     ball_excess: np.ndarray  #: (Z,) radius excess ΔD/2 of each ball, m; (0,): none
     nominal_angle: float  #: the bearing's contact angle, rad (the defects' offset is from it)
-    #: (n, 7): ball, unit direction of the pit's centre in the ball's body frame (3), diameter m,
-    #: depth m, edge m (eq. 13.3)
-    ball_defects: np.ndarray = np.zeros((0, 7))
+    #: (n, 9): ball, unit direction of the pit's centre in the ball's body frame (3), diameter m,
+    #: depth m, edge m, the contact's reduced radius across the groove R_y at the inner and the
+    #: outer race m (eq. 13.3)
+    ball_defects: np.ndarray = np.zeros((0, 9))
     #: (n, 10): ball, order, amplitude m, phase rad, zero direction (3) and spin axis (3) of its
     #: circle in the ball's body frame (eq. 13.6)
     ball_waviness: np.ndarray = np.zeros((0, 10))
@@ -262,7 +263,7 @@ class SurfaceRecord(NamedTuple):
         return self.ball_defects.shape[0] + self.ball_waviness.shape[0] > 0
 
 
-NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 10)), np.zeros(0), 0.0, np.zeros((0, 7)), np.zeros((0, 10)))
+NO_SURFACE = SurfaceRecord(np.zeros((0, 4)), np.zeros((0, 10)), np.zeros(0), 0.0, np.zeros((0, 9)), np.zeros((0, 10)))
 
 
 def ball_circles(bearing) -> np.ndarray:
@@ -304,7 +305,8 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
             phi = math.radians(d.angle_deg)  # zero turned about the axis (Rodrigues)
             direction = (math.cos(phi) * zero + math.sin(phi) * np.cross(axis, zero)
                          + (1.0 - math.cos(phi)) * (axis @ zero) * axis)
-            pits.append((d.ball, *direction, d.length, d.depth, d.edge))
+            across = [f * diam / (2.0 * f - 1.0) for f in (bearing.inner_conformity, bearing.outer_conformity)]
+            pits.append((d.ball, *direction, d.length, d.depth, d.edge, *across))
             continue
         k = RACES.index(d.race)
         conformity = bearing.inner_conformity if k == 0 else bearing.outer_conformity
@@ -342,7 +344,7 @@ def surface_record(surface: SurfaceModel | None, bearing, circles=None) -> Surfa
         ball_waves.append((j, order, amp, math.radians(phase), *(zero / np.linalg.norm(zero)),
                            *(axis / np.linalg.norm(axis))))
     return SurfaceRecord(np.array(waves, dtype=float).reshape(-1, 4), np.array(rows, dtype=float).reshape(-1, 10),
-                         excess, alpha, np.array(pits, dtype=float).reshape(-1, 7),
+                         excess, alpha, np.array(pits, dtype=float).reshape(-1, 9),
                          np.array(ball_waves, dtype=float).reshape(-1, 10))
 
 
@@ -381,7 +383,7 @@ def race_height(surface, race, theta, contact_angle, point_radius, ball, rolling
             a = 0.5 * length
             if (x - a) * (x - a) / (a * a) + across * across / (half * half) >= 1.0:
                 continue
-            drop, slope = rim_drop(x - a, across, a, half, depth, rolling_radius, defects[i, 8])
+            drop, slope, _ = rim_drop(x - a, across, a, half, depth, rolling_radius, defects[i, 8])
         else:
             drop, slope = path_drop(x, length, depth, edge, rolling_radius)
             if half < math.inf:  # a width: the ball also rests on the side edges (eq. 13.2b)
@@ -399,7 +401,7 @@ RIM_SAMPLES = 64
 
 @njit(cache=True, error_model="numpy")
 def rim_drop(x, y, a, b, depth, rolling_radius, across_radius):
-    """(drop m, d drop/dx) of a contact at (``x`` along, ``y`` across; m from the centre) over an
+    """(drop m, d drop/dx, d drop/dy) of a contact at (``x`` along, ``y`` across; m from the centre) over an
     elliptical defect of semi-axes ``a`` (along) and ``b`` (across), m, and ``depth``: the ball's
     sag surface (x'²/(2 R_x) + y'²/(2 R_y)) meets the rim at its lowest point, or the floor
     (eq. 13.2c). The rim's lowest point: the least of RIM_SAMPLES points, then golden-section
@@ -427,8 +429,8 @@ def rim_drop(x, y, a, b, depth, rolling_radius, across_radius):
     dx, dy = a * math.cos(t) - x, b * math.sin(t) - y
     f = dx * dx / (2.0 * rolling_radius) + dy * dy / (2.0 * across_radius)
     if depth <= f:
-        return depth, 0.0
-    return f, -dx / rolling_radius  # (the rim point held: d/dx of its sag)
+        return depth, 0.0, 0.0
+    return f, -dx / rolling_radius, -dy / across_radius  # (the rim point held: its sag's gradient)
 
 
 @njit(cache=True, error_model="numpy")

@@ -202,14 +202,14 @@ def surface_height(terms, race, theta, contact_angle, point_radius, ball, rollin
 
 
 @njit(cache=True, error_model="numpy")
-def ball_surface_height(terms, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+def ball_surface_height(terms, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                         rolling_radius):
     """Stage 0, the ball's side: (h m, dh/dt m/s, G = ∂h/∂φ (3,) m/rad) of the pits and waviness
-    of ``ball`` at a contact by :func:`contact.ball_surface.ball_height` (eq. 13.3, 13.6, 13.7b);
+    of ``ball`` at its contact with ``race`` by :func:`contact.ball_surface.ball_height` (eq. 13.3, 13.6, 13.7b);
     zeros without."""
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] == 0:
         return 0.0, 0.0, np.zeros(3)
-    return ball_height(terms.surface, ball, rotation, normal, rolling, transverse, relative_omega, ball_radius,
+    return ball_height(terms.surface, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                        rolling_radius)
 
 

@@ -154,17 +154,18 @@ def _pit_heights(pit, angle, spin, across=0.0, r_x=R):
     rot = rotation_matrices(np.stack([np.zeros(n), np.zeros(n), np.asarray(angle)], axis=1))
     rot = rotation_matrices(np.array([[0.0, -across, 0.0]])) @ rot
     e = np.broadcast_to(np.eye(3)[:, None, :], (3, n, 3))
-    out = ball_heights(record, np.zeros(n, dtype=int), rot, e[0], e[1], e[2],
+    out = ball_heights(record, np.zeros(n, dtype=int), 1, rot, e[0], e[1], e[2],
                        np.broadcast_to([0.0, 0.0, spin], (n, 3)), R, np.full(n, r_x))
     return out[0], out[1], out[2:].T  # h, dh/dt, G = dh/dphi (n, 3)
 
 
 def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_crosses():
-    """A round pit of 1 mm on a ball (eq. 13.3): on its diameter the contact's drop is eq. 13.2
-    with L = 1 mm and R_x; 0.3 mm off it, the chord 2 sqrt(0.5² - 0.3²) mm = 0.8 mm takes L's
-    place; nothing on the ball's far side; dh/dt is the height's time derivative at the spin."""
+    """A round pit of 1 mm on a ball with edge ramps (1 nm: sharp in effect; eq. 13.3): on its
+    diameter the contact's drop is eq. 13.2 with L = 1 mm and R_x; 0.3 mm off it, the chord
+    2 sqrt(0.5² - 0.3²) mm = 0.8 mm takes L's place; nothing on the ball's far side; dh/dt is
+    the height's time derivative at the spin."""
     diameter, r_x, spin = 1e-3, 0.9 * R, 300.0
-    pit = Defect("ball", 0.0, diameter, 0.28e-3, ball=0)
+    pit = Defect("ball", 0.0, diameter, 0.28e-3, ball=0, edge=1e-9)
     x = np.linspace(-0.6e-3, 0.6e-3, 601)  # arc position of the pit's centre from the contact
     for across, chord in ((0.0, diameter), (0.3e-3, 0.8e-3)):
         h, rate, grad = _pit_heights(pit, x / R, spin, across / R, r_x)
@@ -182,9 +183,62 @@ def test_ball_pit_follows_the_circle_over_its_edges_on_the_chord_the_contact_cro
     far, _, _ = _pit_heights(pit, np.array([math.pi]), spin)
     assert far[0] == 0.0
     # angle_deg turns the pit about the start spin axis: 90 deg ahead, met after the ball turns back by 90 deg
-    turned, _, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0), np.array([-math.pi / 2, 0.0]), spin)
+    turned, _, _ = _pit_heights(Defect("ball", 90.0, diameter, 5e-6, ball=0, edge=1e-9), np.array([-math.pi / 2, 0.0]),
+                                spin)
     assert turned[0] == pytest.approx(-min(5e-6, r_x - math.sqrt(r_x ** 2 - (0.5 * diameter) ** 2)), rel=1e-6)
     assert turned[1] == 0.0
+
+
+def _rim_drop_brute(along, across, radius, depth, r_x, r_y, samples=200001):
+    """The drop of a contact at (−along, −across) from a round pit's centre: the least sag
+    (x'²/(2 R_x) + y'²/(2 R_y)) over its rim, at most the depth; 0 outside the pit."""
+    t = np.linspace(0.0, 2 * np.pi, samples)
+    out = np.zeros(np.shape(along))
+    for i, (a, c) in enumerate(zip(np.atleast_1d(along), np.atleast_1d(across))):
+        if a * a + c * c < radius * radius:
+            f = (radius * np.cos(t) + a) ** 2 / (2 * r_x) + (radius * np.sin(t) + c) ** 2 / (2 * r_y)
+            out[i] = min(depth, f.min())
+    return out
+
+
+def test_sharp_ball_pit_rests_on_its_rim_in_both_directions():
+    """A sharp round pit on a ball (eq. 13.3b): the contact's sag surface (R_x along, R_y =
+    f D/(2f − 1) across) rests on the pit's rim. On its diameter, at x from the centre, the
+    rim point (ρ u, ρ √(1 − u²)) sags ρ² u² (1/R_x − 1/R_y)/2 − ρ x u / R_x + x²/(2 R_x) + ρ²/(2 R_y),
+    least at u = (x/ρ) R_y / (R_y − R_x) inside [−1, 1]; off it, a brute-force rim minimum; dh/dt
+    and G = dh/dφ about both axes that move the pit, numerically; the Case Western 0.18-mm pit,
+    narrower than the contact, is bridged: the ball sinks ~ρ²/(2 R_y), not s(L/2) = ρ²/(2 R_x)."""
+    diameter, r_x, spin, depth = 1e-3, 0.9 * R, 300.0, 0.28e-3
+    rho = 0.5 * diameter
+    f_o = B.outer_conformity
+    r_y = f_o * B.ball_diameter / (2 * f_o - 1)
+    pit = Defect("ball", 0.0, diameter, depth, ball=0)
+    x = np.linspace(-0.6e-3, 0.6e-3, 601)  # arc position of the pit's centre from the contact
+    h, rate, grad = _pit_heights(pit, x / R, spin, 0.0, r_x)
+    along = x  # on the diameter
+    u = np.clip(along / rho * r_y / (r_y - r_x), -1.0, 1.0)
+    sag = rho ** 2 * u ** 2 * (1 / r_x - 1 / r_y) / 2 - rho * along * u / r_x + along ** 2 / (2 * r_x) + rho ** 2 / (2 * r_y)
+    want = np.where(np.abs(along) < rho, -np.minimum(depth, sag), 0.0)
+    np.testing.assert_allclose(h, want, rtol=0, atol=1e-13)
+    smooth = (np.abs(x) < rho - 4e-6) & (np.abs(x) > 4e-6)
+    np.testing.assert_allclose(rate[smooth], np.gradient(h, x / R / spin)[smooth], rtol=2e-2, atol=1e-12)
+    np.testing.assert_allclose(grad[smooth, 2], np.gradient(h, x / R)[smooth], rtol=2e-2, atol=1e-12)
+    # 0.3 mm off the diameter, against the rim's brute-force minimum; G across: tipping the ball
+    for across in (0.3e-3,):
+        h, _, grad = _pit_heights(pit, x / R, spin, across / R, r_x)
+        d = np.stack([np.cos(across / R) * np.cos(x / R), np.sin(x / R), np.sin(across / R) * np.cos(x / R)], axis=1)
+        a_arc, c_arc = R * np.arctan2(d[:, 1], d[:, 0]), R * np.arctan2(d[:, 2], d[:, 0])
+        np.testing.assert_allclose(h, -_rim_drop_brute(a_arc, c_arc, rho, depth, r_x, r_y), rtol=0, atol=1e-13)
+    eps = 1e-7  # about e_y the pit moves across the contact (t2 = e_z)
+    xs = np.array([-0.2e-3, 0.1e-3])
+    lo, _, _ = _pit_heights(pit, xs / R, spin, (0.2e-3 - eps * R) / R, r_x)
+    hi, _, g_mid = _pit_heights(pit, xs / R, spin, (0.2e-3 + eps * R) / R, r_x)
+    # the tip is −across/R about e_y applied last: dh/d(tip about +e_y) = −(hi − lo)/(2 eps)
+    np.testing.assert_allclose(g_mid[:, 1], -(hi - lo) / (2 * eps), rtol=2e-2)
+    # the Case Western pit: bridged
+    small, _, _ = _pit_heights(Defect("ball", 0.0, 0.18e-3, depth, ball=0), np.array([0.0]), spin, 0.0, r_x)
+    assert -small[0] == pytest.approx(0.09e-3 ** 2 / (2 * r_y), rel=1e-6)
+    assert -small[0] < 0.05 * (0.09e-3 ** 2 / (2 * r_x))  # R_x / R_y = 3.5 %
 
 
 def test_ball_waviness_is_the_fourier_sum_over_the_contacts_longitude_on_the_ball():

@@ -134,7 +134,7 @@ def _contact_kinematics(ib, k, j, balls, frames, geometry, terms):
     if terms.surface.ball_defects.shape[0] + terms.surface.ball_waviness.shape[0] > 0:  # its own surface (13.3, 13.6)
         orbit = wr[0] * R[0, 2] + wr[1] * R[1, 2] + wr[2] * R[2, 2] + orbit_rel  # absolute, about the race axis
         pit, pit_rate, g = ball_surface_height(
-            terms, j, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
+            terms, j, k, balls.rotation[ib, j], (nx, ny, nz), (t1x, t1y, t1z), (t2x, t2y, t2z),
             (wbx - orbit * R[0, 2], wby - orbit * R[1, 2], wbz - orbit * R[2, 2]), ball_radius, r_x)
         if pit != 0.0 or g[0] != 0.0 or g[1] != 0.0 or g[2] != 0.0:
             pen += pit
