@@ -6,12 +6,15 @@ The Case Western 6205 at 1797 rpm, 300 N radial, 20 kHz, housing 3 kHz / 2 kg / 
 three 0.18-mm, 0.28-mm-deep EDM faults as round pits (outer race, inner race, a ball): the
 line at the fault's frequency (BPFO, BPFI, 2 BSF) and the strongest envelope line at the
 contact damping ratio ζ = 0.025, 0.05 (the default, assumed) and 0.1 (x0.5, x2), and at 0.3,
-the lower end of what Kraemer's bearing damping range gives per contact. Prints one line per
-run and the ratios to the default.
+the lower end of what Kraemer's bearing damping range gives per contact; and, for a strike, the
+12-ball bearing's deep notch (the 6205's balls on a 54-mm pitch, 0.8 mm x 0.3 mm outer notch,
+600 rpm, 500 N radial; --strike-time, default 0.1 s). Prints one line per run and the ratios
+to the default.
 """
 from __future__ import annotations
 
 import argparse
+from dataclasses import replace
 
 from contact.ballrace import ContactLaw
 from contact.surface import Defect, SurfaceModel
@@ -30,11 +33,19 @@ def line_at(result, hz, tolerance=1.0):
     return max(near, key=lambda p: p[1]) if near else (hz, 0.0)
 
 
-def main(run_time: float) -> None:
-    for name, (surface, key, factor) in FAULTS.items():
+#: the strike case: (bearing, rpm, radial force N, surface, line, factor)
+STRIKE = (replace(CWRU_6205_BEARING, balls=12, pitch_diameter=54e-3), 600.0, 500.0,
+          SurfaceModel((Defect("outer", 0.0, 0.8e-3, 0.3e-3),)), "BPFO", 1)
+
+
+def main(run_time: float, strike_time: float) -> None:
+    cases = {name: (CWRU_6205_BEARING, 1797.0, 300.0, surface, key, factor, run_time)
+             for name, (surface, key, factor) in FAULTS.items()}
+    cases["12-ball deep notch (strike)"] = (*STRIKE, strike_time)
+    for name, (bearing, rpm, radial, surface, key, factor, length) in cases.items():
         base = None
         for zeta in RATIOS:
-            r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=run_time, surface=surface,
+            r = vibration(bearing, rpm=rpm, radial_force=radial, time=length, surface=surface,
                           contact_law=ContactLaw(damping_ratio=zeta))
             f = factor * r.fault_frequencies["actual"][key]
             hz, amp = line_at(r, f)
@@ -51,4 +62,6 @@ def main(run_time: float) -> None:
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--time", type=float, default=0.3)
-    main(parser.parse_args().time)
+    parser.add_argument("--strike-time", type=float, default=0.1)
+    args = parser.parse_args()
+    main(args.time, args.strike_time)

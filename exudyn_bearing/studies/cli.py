@@ -208,7 +208,8 @@ def _vibration(args) -> int:
         print(f"  {name:6} {faults['nominal'][name]:11.3f} {faults['kinematic'][name]:13.3f} "
               f"{faults['actual'][name]:11.3f} {faults['actual'][name] / (args.rpm / 60):15.4f}")
     peaks = ", ".join(f"{f:.2f} Hz ({a:.3g})" for f, a in result.envelope_peaks[:5])
-    print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2): {peaks}")
+    print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2, uncalibrated: the contact "
+          f"damping is assumed, MODEL.md §13c): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
           f"(step {_steps_said(sv)}, strike number {sv['strike_number']:.2g}, defect reach "

@@ -24,6 +24,9 @@ __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies",
 
 #: the fault frequencies, in the order printed
 FAULTS = ("BPFO", "BPFI", "BSF", "FTF")
+#: what the amplitudes rest on (MODEL.md §13c, 'Contact damping'): stated in every result
+AMPLITUDES = ("uncalibrated: no measured amplitude backs them; the contacts' damping ratio is an assumption "
+              "(ContactLaw.damping_ratio, 0.05 of critical by default) and the housing the given oscillator")
 #: corner of the anti-aliasing low-pass as a fraction of the sample rate (a data-acquisition
 #: system's sits at 0.4-0.45: flat below, ~30 dB down at the Nyquist frequency)
 ANTI_ALIAS_CORNER = 0.4
@@ -183,6 +186,7 @@ class VibrationResult:
                 "sample_rate_Hz": self.sample_rate, "envelope_band_Hz": list(self.band),
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
                 "solver": self.solver, "error_estimate": self.error_estimate, "impacts": self.impacts,
+                "amplitudes": AMPLITUDES,
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s; peak_N, load_before_N N", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
