@@ -147,9 +147,8 @@ class BearingConnector(ConnectorDiagnostics):
         return origin, a @ rot_loc, vel[:, slot] + cross(w, origin - pos[:, slot]), w, slot
 
     def race_pose(self, name, pos, rot):
-        """Origin (3,) m and rotation (3, 3) of the ``'inner'`` or ``'outer'`` race frame for the
-        node positions ``pos`` (n, 3) and rotation matrices ``rot`` (n, 3, 3) of one state
-        (:meth:`decode`), global."""
+        """Origin (3,) m and rotation (3, 3), global, of the ``'inner'`` or ``'outer'`` race frame for
+        one state's node positions ``pos`` (n, 3) and rotations ``rot`` (n, 3, 3) (:meth:`decode`)."""
         slot = self.layout[name]
         if slot is None:
             return self.origin, self.rotation
@@ -219,8 +218,8 @@ class BearingConnector(ConnectorDiagnostics):
         return self._state(t, pos, rot, vel, omega, None, parts)
 
     def normal_loads(self, t, q, q_t, chunk: int = 256):
-        """Normal loads (B, 2, Z) N of B recorded states (times ``t`` (B,) s, absolute coordinates and
-        velocities (B, 6 n_nodes)), with the surfaces; compiled where both races are bodies."""
+        """Normal loads (B, 2, Z) N of B recorded states (``t`` (B,) s, absolute q, q_t (B, 6 n));
+        compiled where both races are bodies."""
         t, q, q_t = np.asarray(t, dtype=float), np.atleast_2d(q), np.atleast_2d(q_t)
         if self._compiled is None or self.layout["inner"] is None or self.layout["outer"] is None:
             s = self.states(t, q, q_t)

@@ -21,7 +21,7 @@ from ..races import node_rows
 from ..renamed import accepts_old_names
 from ..results.records import assumptions_record, setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup
-from .stepping import PassageStepper, solve_with_passages
+from .stepping import passage_stepper, solve_with_passages
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
 
@@ -289,7 +289,7 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings(), windows
     counted = len(predictor.cut_times) if predictor is not None else 0
     printing = exu.config.printToConsole
     exu.config.printToConsole = False  # quiet for the run, restored below
-    stepper = _stepper(handles, settings, windows)
+    stepper = passage_stepper(handles, settings, windows)
     start, cpu = _time.perf_counter(), _time.process_time()
     try:
         if stepper is None:
@@ -328,17 +328,6 @@ def run_solver(mbs, handles, end_time: float, settings=SolverSettings(), windows
         raise BearingSimulationError(f"solver {settings.solver} diverged (step {settings.step:g} s){_where(handles, mbs)}: "
                                      "the contacts are too stiff for this step; use generalized-alpha or a smaller step")
     return info
-
-
-def _stepper(handles, settings, windows):
-    """The :class:`PassageStepper` of a run with a passage step and windows, else None."""
-    if settings.passage_step is None or not settings.implicit or settings.passage_step >= settings.step:
-        return None
-    if windows is None or len(windows) != len(handles):
-        raise ValueError("passage_step: give run_solver the windows, one handle's PassageWindows(...) or None each")
-    if not any(w is not None and len(w) for w in windows):
-        return None
-    return PassageStepper(handles, windows, settings.step, settings.passage_step)
 
 
 def _cut_times(predictor, counted, implicit):

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..races import node_rows
 
-__all__ = ["PassageStepper", "solve_with_passages"]
+__all__ = ["PassageStepper", "passage_stepper", "solve_with_passages"]
 
 
 class PassageStepper:
@@ -97,6 +97,18 @@ class PassageStepper:
         it.currentStepSize = h
         it.currentTime = start + h
         return True
+
+
+def passage_stepper(handles, settings, windows):
+    """The :class:`PassageStepper` of a run whose ``settings`` (``SolverSettings``) have a passage
+    step below their step and whose ``windows`` (per handle) hold one, else None."""
+    if settings.passage_step is None or not settings.implicit or settings.passage_step >= settings.step:
+        return None
+    if windows is None or len(windows) != len(handles):
+        raise ValueError("passage_step: give run_solver the windows, one handle's PassageWindows(...) or None each")
+    if not any(w is not None and len(w) for w in windows):
+        return None
+    return PassageStepper(handles, windows, settings.step, settings.passage_step)
 
 
 def solve_with_passages(mbs, simulation_settings, stepper: PassageStepper) -> bool:
