@@ -175,7 +175,7 @@ def _vibration(args) -> int:
         warnings.simplefilter("ignore", SurfaceStartWarning)
         result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                            sample_rate=args.sample_rate, settle=args.settle,
-                           band=tuple(args.band) if args.band else None, error_estimate=args.error_estimate)
+                           band=_band(args.band), error_estimate=args.error_estimate)
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
@@ -208,8 +208,10 @@ def _vibration(args) -> int:
         print(f"  {name:6} {faults['nominal'][name]:11.3f} {faults['kinematic'][name]:13.3f} "
               f"{faults['actual'][name]:11.3f} {faults['actual'][name] / (args.rpm / 60):15.4f}")
     peaks = ", ".join(f"{f:.2f} Hz ({a:.3g})" for f, a in result.envelope_peaks[:5])
-    print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, m/s^2, uncalibrated: the contact "
-          f"damping is assumed, MODEL.md §13c): {peaks}")
+    how = {"kurtogram": f"the kurtogram's, spectral kurtosis {result.band_kurtosis:.3g}" if result.band_kurtosis
+           is not None else "", "housing": "about the housing resonance", "given": "given"}[result.band_from]
+    print(f"  envelope peaks (band {result.band[0]:.0f}-{result.band[1]:.0f} Hz, {how}; m/s^2, uncalibrated: the "
+          f"contact damping is assumed, MODEL.md §13c): {peaks}")
     sv = result.solver
     print(f"  defect passages: {len(result.defect_events)}; signal {signal}; wall time {result.wall_time_s:.1f} s "
           f"(step {_steps_said(sv)}, strike number {sv['strike_number']:.2g}, defect reach "
@@ -232,6 +234,22 @@ def _vibration(args) -> int:
     if args.plot:
         print(f"  plot written to {args.plot}")
     return 0
+
+
+def _band(words) -> tuple | str | None:
+    """``--band``: auto, housing, LOW:HIGH or LOW HIGH (Hz) as :func:`vibration` takes it."""
+    text = " ".join(words).strip()
+    if text in ("auto", "housing"):
+        return None if text == "housing" else text
+    parts = text.replace(":", " ").split()
+    try:
+        low, high = (float(v) for v in parts)
+    except ValueError:
+        raise ValueError(f"--band: auto, housing, LOW:HIGH or LOW HIGH in Hz, got {text!r}") from None
+    if low >= high:
+        raise ValueError(f"--band: the low edge {low:g} Hz is not below the high edge {high:g} Hz (reversed?); "
+                         "give LOW then HIGH")
+    return low, high
 
 
 def _steps_said(solver: dict) -> str:

@@ -139,8 +139,10 @@ def _vibration_options(p) -> None:
     p.add_argument("--sample-rate", type=float, default=20000.0, help="output sample rate, Hz (the step is at most "
                                                                         "its period; the housing is recorded through an "
                                                                         "anti-aliasing filter at 0.4 x this rate)")
-    p.add_argument("--band", type=float, nargs=2, metavar=("LOW", "HIGH"),
-                   help="envelope band, Hz (default: 0.6-1.4 x the housing resonance)")
+    p.add_argument("--band", nargs="+", default=["auto"], metavar="BAND",
+                   help="envelope band: auto (the band of the largest spectral kurtosis, Antoni's fast "
+                        "kurtogram, MODEL.md eq. 13.9), housing (0.6-1.4 x the housing resonance), or LOW:HIGH "
+                        "(or LOW HIGH) in Hz")
     p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "
                                                            "[housing], else 3000)")
     p.add_argument("--housing-mass", type=float, help="housing mass (ring included), kg (default: the file's, else 2)")

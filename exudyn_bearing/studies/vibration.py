@@ -27,6 +27,10 @@ FAULTS = ("BPFO", "BPFI", "BSF", "FTF")
 #: what the amplitudes rest on (MODEL.md §13c, 'Contact damping'): stated in every result
 AMPLITUDES = ("uncalibrated: no measured amplitude backs them; the contacts' damping ratio is an assumption "
               "(ContactLaw.damping_ratio, 0.05 of critical by default) and the housing the given oscillator")
+#: the least share of the signal's power (above 5 x the highest fault frequency) a band must carry
+#: for the automatic envelope band: a simulated signal has no noise floor, and spectral kurtosis,
+#: blind to amplitude, otherwise picks impulsive bands of 1e-4 m/s² (MODEL.md §13b)
+BAND_POWER_SHARE = 0.05
 #: corner of the anti-aliasing low-pass as a fraction of the sample rate (a data-acquisition
 #: system's sits at 0.4-0.45: flat below, ~30 dB down at the Nyquist frequency)
 ANTI_ALIAS_CORNER = 0.4
@@ -122,6 +126,9 @@ def envelope_spectrum(signal, sample_rate: float, band: tuple):
 
     low, high = band
     nyquist = 0.5 * sample_rate
+    if low >= high:
+        raise ValueError(f"band: the low edge {low:g} Hz is not below the high edge {high:g} Hz (reversed?); "
+                         "give LOW then HIGH")
     if not 0 < low < high < nyquist:
         raise ValueError(f"band: ({low}, {high}) Hz must lie inside (0, {nyquist:g}) Hz, the Nyquist frequency")
     sos = butter(4, [low, high], btype="bandpass", fs=sample_rate, output="sos")
@@ -179,17 +186,23 @@ class VibrationResult:
     error_estimate: dict | None = None  #: see :func:`vibration`
     #: the passages as the contact load shows them (:func:`~exudyn_bearing.studies.passages.impact_summary`)
     impacts: dict = field(default_factory=dict)
+    #: how the band was chosen: 'kurtogram' (the signal's, eq. 13.9), 'housing' (±40 % about its
+    #: resonance) or 'given'; the band's spectral kurtosis; the kurtogram (``studies.kurtogram``)
+    band_from: str = "given"
+    band_kurtosis: float | None = None
+    kurtogram: object = field(repr=False, default=None)
 
     def to_dict(self) -> dict:
         return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
                 "spectrum_peaks_Hz": self.spectrum_peaks, "defect_events": self.defect_events,
                 "sample_rate_Hz": self.sample_rate, "envelope_band_Hz": list(self.band),
+                "envelope_band_from": self.band_from, "envelope_band_kurtosis": self.band_kurtosis,
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
                 "solver": self.solver, "error_estimate": self.error_estimate, "impacts": self.impacts,
                 "amplitudes": AMPLITUDES,
                 "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s; peak_N, load_before_N N", "sample_rate_Hz": "Hz",
-                          "envelope_band_Hz": "Hz", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
+                          "envelope_band_Hz": "Hz", "envelope_band_kurtosis": "-", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
                           "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -; "
                                     "defect_reach_m [reach, approach] m",
                           "error_estimate": "Hz, %, pp, s", "impacts": "s; N",
@@ -199,7 +212,7 @@ class VibrationResult:
 
 
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
-              sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | None = None, settle: float = 0.02,
+              sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | str | None = "auto", settle: float = 0.02,
               surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
               contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
@@ -210,8 +223,10 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     the time step is at most its period, puts two steps into each defect passage and resolves
     the contact's motion where a ball's contact opens (or loses half its approach) over a
     defect or it strikes the edge hard, a whole number per sample; §13c):
-    spectrum, envelope spectrum in ``band`` (default: ±40 % about
-    the housing resonance, at most the anti-aliasing corner), fault frequencies, defect
+    spectrum, envelope spectrum in ``band`` — "auto" (default): the band of the largest spectral
+    kurtosis (:func:`~exudyn_bearing.studies.kurtogram.kurtogram`, eq. 13.9) at least 3 x the highest
+    fault frequency wide and above 5 x it, below the anti-aliasing corner; None: ±40 % about
+    the housing resonance; or (low, high) Hz —, fault frequencies, defect
     passages. The first ``settle`` s are left out of the spectra. ``bearing`` a Bearing,
     BearingSetup or path; ``surface`` overrides the setup's (so do ``lubricant``,
     ``contact_law``, ``cage``, ``ball_drag`` and ``housing``). With
@@ -279,13 +294,14 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                               if isinstance(v, np.ndarray) and v.shape[:1] == results.time.shape})
     f_i = rpm / 60.0
     resonance = math.sqrt(housing.support[0] / housing.mass) / (2 * math.pi)
-    band = band or (0.6 * resonance, min(1.4 * resonance, ANTI_ALIAS_CORNER * sample_rate))
     load = np.array([radial_force, 0.0, axial_force])
     signal = acc[keep] @ (load / np.linalg.norm(load))  # along the load (x radial, z axial)
-    f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
-    f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
+    requested = band
+    band, band_from, chart = _envelope_band(band, signal, sample_rate, faults["kinematic"], resonance)
+    f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
+    f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     events = defect_events(results, bearing, surface) if surface.defects else []
     if surface.defects:  # the load at every step: when each contact unloads and is struck
         states = handle.States(mbs)
@@ -293,7 +309,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
             events = sorted(events + ball_defect_events(handle.connector, *states), key=lambda e: e["edge_s"])
         events = read_impacts(handle.connector, events, *states)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
-                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, step=step)
+                           sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step)
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
@@ -306,7 +322,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "reach_share": share,
                            "defect_reach_m": defect_reaches(bearing, surface, loads) if loads is not None else [],
                            "surface_start": (handle.connector.surface_start or {}).get("message")},
-                          impacts=impact_summary(events))
+                          impacts=impact_summary(events), band_from=band_from,
+                          band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart)
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle,
@@ -322,6 +339,32 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                               "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent
                                                             - out.kinematic_cage_slip_percent)}
     return out
+
+
+def _envelope_band(band, signal, sample_rate, faults, resonance):
+    """(band Hz, how it was chosen, the kurtogram or None) of :func:`vibration`'s ``band``: "auto",
+    None (the housing's) or (low, high)."""
+    corner = ANTI_ALIAS_CORNER * sample_rate
+    housing = (0.6 * resonance, min(1.4 * resonance, corner))
+    if band is None:
+        return housing, "housing", None
+    if isinstance(band, str):
+        if band != "auto":
+            raise ValueError(f"band must be 'auto', None or (low, high) Hz, got {band!r}")
+        from .kurtogram import kurtogram
+
+        top = max(faults["BPFO"], faults["BPFI"], 2.0 * faults["BSF"])
+        try:
+            chart = kurtogram(signal, sample_rate, min_hz=5.0 * top, max_hz=corner, min_width=3.0 * top,
+                              min_power_share=BAND_POWER_SHARE)
+        except ValueError:  # no band that wide above 5 x the faults below the corner: the housing's
+            return housing, "housing", None
+        return chart.band, "kurtogram", chart
+    low, high = (float(v) for v in band)
+    if low >= high:
+        raise ValueError(f"band: the low edge {low:g} Hz is not below the high edge {high:g} Hz (reversed?); "
+                         "give LOW then HIGH")
+    return (low, high), "given", None
 
 
 def _steps(handle, settings, rpm, period):
@@ -357,7 +400,8 @@ def write_signal(result: VibrationResult, path) -> None:
 
 def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
     """Time signal, spectrum and envelope spectrum with the fault frequencies: kinematic
-    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF."""
+    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF; the kurtogram
+    with the chosen band where the band came from it."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -367,7 +411,8 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
     keep = result.time >= settle
     load = np.array([float(result.inputs.get("radial_force", 0.0)), 0.0, float(result.inputs.get("axial_force", 0.0))])
     x = result.acceleration[keep] @ (load / np.linalg.norm(load))  # along the load, as analysed
-    fig, ax = plt.subplots(3, 1, figsize=(9, 9))
+    chart = result.kurtogram
+    fig, ax = plt.subplots(3 + (chart is not None), 1, figsize=(9, 9 + 3 * (chart is not None)))
     ax[0].plot(result.time[keep], x, lw=0.5)
     ax[0].set(xlabel="t (s)", ylabel="housing acceleration along the load (m/s²)", title=title)
     f, a = amplitude_spectrum(x, result.sample_rate)
@@ -387,6 +432,27 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
     ax[2].set(xlabel="f (Hz)", ylabel="envelope amplitude (m/s²)", xlim=(0, fmax),
               title=f"envelope spectrum, band {result.band[0]:.0f}–{result.band[1]:.0f} Hz")
     ax[2].legend(fontsize=7, ncol=4)
+    if chart is not None:
+        _plot_kurtogram(ax[3], chart)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def _plot_kurtogram(ax, chart) -> None:
+    """The kurtogram: spectral kurtosis (eq. 13.9) per level (rows) and band, the chosen band boxed."""
+    from matplotlib.patches import Rectangle
+
+    columns = 768  # each level's bands spread over a common frequency grid
+    image = np.array([np.asarray(row)[(np.arange(columns) * len(row)) // columns] for row in chart.kurtosis])
+    nyquist = 0.5 * chart.sample_rate
+    shown = ax.imshow(image, aspect="auto", origin="upper", extent=(0, nyquist, len(chart.levels) - 0.5, -0.5),
+                      cmap="viridis", interpolation="nearest")
+    ax.set_yticks(range(len(chart.levels)), [f"{level:.1f}" for level in chart.levels])
+    row = chart.levels.index(chart.level)
+    ax.add_patch(Rectangle((chart.band[0], row - 0.5), chart.band[1] - chart.band[0], 1.0, fill=False, ec="red",
+                           lw=1.5))
+    ax.set(xlabel="f (Hz)", ylabel="level", title=f"kurtogram (spectral kurtosis, Antoni 2007): band "
+           f"{chart.band[0]:.0f}–{chart.band[1]:.0f} Hz, K = {chart.band_kurtosis:.3g}")
+    ax.figure.colorbar(shown, ax=ax, label="spectral kurtosis")
+
