@@ -494,7 +494,8 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     save_bearing(BearingFile(CWRU_6205_BEARING, surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))),
                  path)
     cmd = [sys.executable, "-m", "exudyn_bearing", "vibration", "--bearing", str(path), "--rpm", "1797",
-           "--radial", "300", "--time", "0.05", "--out", str(tmp_path / "out")]
+           "--radial", "300", "--time", "0.05", "--out", str(tmp_path / "out"), "--plot", str(tmp_path / "vib.png"),
+           "--plot-max", "600"]
     text = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     assert text.returncode == 0, text.stderr
     data = json.loads((tmp_path / "out" / "vibration.json").read_text())  # what --json prints
@@ -506,6 +507,11 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     signal = np.loadtxt(data["signal"], delimiter=",", skiprows=2)
     assert signal.shape[1] == 10 and np.allclose(np.diff(signal[:, 0]), 5e-5)
     assert "surface" in data["inputs"] and "units" in data
+    # the band from the signal (the kurtogram's), stated; the plot with its kurtogram written
+    assert data["envelope_band_from"] == "kurtogram" and data["envelope_band_kurtosis"] > 0
+    assert data["inputs"]["band"] == repr("auto") and "the kurtogram's, spectral kurtosis" in text.stdout
+    assert data["plot"] == str(tmp_path / "vib.png") and (tmp_path / "vib.png").stat().st_size > 10000
+    assert data["amplitudes"].startswith("uncalibrated")
     # R_x = r (d_m + D) / d_m = 4.777 mm at the outer race: s(0.09 mm) = 0.848 um
     assert "across the whole track (no width given), 280 um deep; a ball reaches 0.848 um of it" in text.stdout
     assert "BPFO" in text.stdout

@@ -180,7 +180,8 @@ def _vibration(args) -> int:
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
     if args.plot:
-        plot_vibration(result, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm")
+        plot_vibration(result, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm",
+                       envelope_max_hz=args.plot_max)
         data["plot"] = str(args.plot)
     (out / "vibration.json").write_text(json.dumps(data, indent=1), encoding="utf-8")
     if args.json:

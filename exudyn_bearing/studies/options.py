@@ -143,6 +143,8 @@ def _vibration_options(p) -> None:
                    help="envelope band: auto (the band of the largest spectral kurtosis, Antoni's fast "
                         "kurtogram, MODEL.md eq. 13.9), housing (0.6-1.4 x the housing resonance), or LOW:HIGH "
                         "(or LOW HIGH) in Hz")
+    p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
+                                                                 "5 x the highest of BPFO, BPFI, 2 BSF)")
     p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "
                                                            "[housing], else 3000)")
     p.add_argument("--housing-mass", type=float, help="housing mass (ring included), kg (default: the file's, else 2)")

@@ -398,10 +398,12 @@ def write_signal(result: VibrationResult, path) -> None:
         np.savetxt(fh, table, delimiter=",", fmt="%.9g")
 
 
-def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
+def plot_vibration(result: VibrationResult, path, title: str = "", envelope_max_hz: float | None = None) -> None:
     """Time signal, spectrum and envelope spectrum with the fault frequencies: kinematic
-    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF; the kurtogram
-    with the chosen band where the band came from it."""
+    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF, and the
+    sidebands a diagnostician looks for (dotted: BPFI ± the shaft, 2 BSF ± FTF, of the actual
+    frequencies); the envelope spectrum up to ``envelope_max_hz`` (default 5 x the highest of
+    BPFO, BPFI, 2 BSF); the kurtogram with the chosen band where the band came from it."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -421,7 +423,8 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
     ax[1].set(xlabel="f (Hz)", ylabel="amplitude (m/s²)", xlim=(0, 0.5 * result.sample_rate))
     fe, ae = envelope_spectrum(x, result.sample_rate, result.band)
     ax[2].plot(fe, ae, lw=0.7, color="k")
-    fmax = 4.2 * max(result.fault_frequencies["kinematic"]["BPFI"], result.fault_frequencies["kinematic"]["BPFO"])
+    kin = result.fault_frequencies["kinematic"]
+    fmax = envelope_max_hz or 5.0 * max(kin["BPFI"], kin["BPFO"], 2.0 * kin["BSF"])
     colors = {"BPFO": "tab:red", "BPFI": "tab:blue", "BSF": "tab:green", "FTF": "tab:orange"}
     for kind, style in (("kinematic", "--"), ("actual", "-")):
         for name, value in result.fault_frequencies[kind].items():
@@ -429,6 +432,11 @@ def plot_vibration(result: VibrationResult, path, title: str = "") -> None:
             for m in mult:
                 ax[2].axvline(m * value, ls=style, lw=0.8, color=colors[name], alpha=0.8,
                               label=f"{'2 ' if name == 'BSF' else ''}{name} {kind}" if m == mult[0] else None)
+    actual, shaft = result.fault_frequencies["actual"], float(result.inputs.get("rpm", 0.0)) / 60.0
+    for centre, offset, name in ((actual["BPFI"], shaft, "BPFI ± shaft"), (2.0 * actual["BSF"], actual["FTF"],
+                                                                          "2 BSF ± FTF")):
+        for k, sign in enumerate((-1.0, 1.0)):
+            ax[2].axvline(centre + sign * offset, ls=":", lw=0.8, color="0.4", label=name if k == 0 else None)
     ax[2].set(xlabel="f (Hz)", ylabel="envelope amplitude (m/s²)", xlim=(0, fmax),
               title=f"envelope spectrum, band {result.band[0]:.0f}–{result.band[1]:.0f} Hz")
     ax[2].legend(fontsize=7, ncol=4)
