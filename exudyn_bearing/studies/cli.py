@@ -175,7 +175,7 @@ def _vibration(args) -> int:
         warnings.simplefilter("ignore", SurfaceStartWarning)
         result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                            sample_rate=args.sample_rate, settle=args.settle,
-                           band=_band(args.band), error_estimate=args.error_estimate)
+                           band=_band(args.band), error_estimate=args.error_estimate, masking=_masking(args))
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
@@ -235,6 +235,21 @@ def _vibration(args) -> int:
     if args.plot:
         print(f"  plot written to {args.plot}")
     return 0
+
+
+def _masking(args):
+    """The :class:`Masking` of ``--snr``, ``--unbalance``, ``--mesh`` and ``--seed``, or None."""
+    from .masking import Masking
+
+    mesh = args.mesh or []
+    if mesh and not 2 <= len(mesh) <= 3:
+        raise ValueError(f"--mesh: TEETH AMPLITUDE [MODULATION], got {len(mesh)} values")
+    if mesh and mesh[0] != int(mesh[0]):
+        raise ValueError(f"--mesh: TEETH must be a whole number, got {mesh[0]:g}")
+    masking = Masking(snr_db=args.snr, unbalance=args.unbalance, mesh_teeth=int(mesh[0]) if mesh else 0,
+                      mesh_amplitude=mesh[1] if mesh else 0.0, mesh_modulation=mesh[2] if len(mesh) > 2 else 0.0,
+                      seed=args.seed)
+    return masking if masking.active else None
 
 
 def _band(words) -> tuple | str | None:

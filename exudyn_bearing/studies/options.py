@@ -143,6 +143,13 @@ def _vibration_options(p) -> None:
                    help="envelope band: auto (the band of the largest spectral kurtosis, Antoni's fast "
                         "kurtogram, MODEL.md eq. 13.9), housing (0.6-1.4 x the housing resonance), or LOW:HIGH "
                         "(or LOW HIGH) in Hz")
+    p.add_argument("--snr", type=float, metavar="DB", help="measurement noise at this signal-to-noise ratio, dB "
+                                                            "(default: none; MODEL.md §13b)")
+    p.add_argument("--unbalance", type=float, default=0.0, metavar="A",
+                   help="the shaft's unbalance line on the housing, m/s^2 (default 0)")
+    p.add_argument("--mesh", type=float, nargs="+", metavar="X", help="a gear mesh on the shaft: TEETH AMPLITUDE_m/s^2 "
+                                                                      "[MODULATION 0-1] (sidebands at +- the shaft)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the noise (default 0)")
     p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
                                                                  "5 x the highest of BPFO, BPFI, 2 BSF)")
     p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "

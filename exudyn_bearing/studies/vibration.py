@@ -218,7 +218,7 @@ class VibrationResult:
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
               sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | str | None = "auto", settle: float = 0.02,
               surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
-              contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP) -> VibrationResult:
+              contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP, masking=None) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, a ``races.HousingModel`` or ``races.Housing(...)``,
     default the setup's, else ``HousingModel()``) for ``time`` s and
@@ -237,7 +237,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     ``contact_law``, ``cage``, ``ball_drag`` and ``housing``). With
     ``error_estimate`` the run is repeated at half the step and ``error_estimate`` holds the
     differences of the strongest envelope line (frequency, amplitude) and of the slip, and twice
-    the amplitude's: its error bound where the amplitude converges at order >= 1."""
+    the amplitude's: its error bound where the amplitude converges at order >= 1. ``masking``: a
+    :class:`~exudyn_bearing.studies.masking.Masking` (measurement noise, machine lines) added to
+    the recorded acceleration before the analysis; None (default): the bearing alone."""
     import exudyn as exu
 
     from ..bearingfile import as_setup
@@ -255,6 +257,10 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     if housing is not FROM_SETUP and housing is not None and not isinstance(housing, HousingModel) \
             and getattr(housing, "kind", None) != "housing":
         raise ValueError(f"housing must be a races.HousingModel(...) or races.Housing(...), got {housing!r}")
+    from .masking import Masking
+
+    if masking is not None and not isinstance(masking, Masking):
+        raise ValueError(f"masking must be a studies.masking.Masking(...) or None, got {masking!r}")
     if not (math.isfinite(time) and time > settle >= 0):
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag,
@@ -301,6 +307,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_i = rpm / 60.0
     resonance = math.sqrt(housing.support[0] / housing.mass) / (2 * math.pi)
     load = np.array([radial_force, 0.0, axial_force])
+    if masking is not None and masking.active:
+        acc = masking.apply(t, acc, load, f_i, settle)
     signal = acc[keep] @ (load / np.linalg.norm(load))  # along the load (x radial, z axial)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
@@ -315,7 +323,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
             events = sorted(events + ball_defect_events(handle.connector, *states), key=lambda e: e["edge_s"])
         events = read_impacts(handle.connector, events, *states)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
-                           sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step)
+                           sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step,
+                           **({} if masking is None else {"masking": masking}))
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
@@ -332,7 +341,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart)
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
-                          sample_rate=sample_rate, housing=housing, band=band, settle=settle,
+                          sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
                           settings=replace(settings, step=0.5 * coarse,
                                            passage_step=0.5 * step if step < coarse else None))
         (f0, a0), (f1, a1) = out.envelope_peaks[0], finer.envelope_peaks[0]

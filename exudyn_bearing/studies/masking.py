@@ -1,0 +1,94 @@
+"""What masks a bearing's signal on a machine (MODEL.md §13b; issue 50 item 3, in part): the
+recorded housing acceleration with measurement noise at a stated signal-to-noise ratio and the
+lines other machine parts put on it — the shaft's unbalance at the shaft rate, a gear mesh on
+the shaft with its sidebands. Off by default: a clean study sees the bearing alone.
+
+These are added to the recorded signal, as a measurement would carry them; they are not forces
+on the model (an unbalance's rotating force, which would also move the bearing's loads, and
+random slip from load or speed fluctuations are not built yet).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Masking"]
+
+
+def _finite(name, value, low=0.0, allow_none=False):
+    if value is None and allow_none:
+        return
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < low:
+        raise ValueError(f"masking.{name} must be a finite number >= {low:g}, got {value!r}")
+
+
+@dataclass(frozen=True)
+class Masking:
+    """Masking of the housing acceleration (SI units).
+
+    Parameters
+    ----------
+    snr_db : float or None
+        Measurement noise, white and Gaussian at the sample rate, at this signal-to-noise ratio
+        in dB against the clean signal's RMS along the load (after the settling time); the same
+        noise level on each axis. None: no noise.
+    unbalance : float
+        Amplitude of the shaft-rate line an unbalanced rotor puts on the housing, m/s², along
+        the load. 0: none.
+    mesh_teeth : int
+        Teeth of a gear on the shaft: a mesh line at teeth × the shaft rate. 0: none.
+    mesh_amplitude : float
+        Its amplitude, m/s², along the load.
+    mesh_modulation : float
+        Depth of its amplitude modulation at the shaft rate (0–1): sidebands at ± the shaft rate,
+        each mesh_amplitude × mesh_modulation / 2.
+    seed : int
+        Seed of the noise: the same seed, the same noise.
+    """
+
+    snr_db: float | None = None
+    unbalance: float = 0.0
+    mesh_teeth: int = 0
+    mesh_amplitude: float = 0.0
+    mesh_modulation: float = 0.0
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        _finite("snr_db", self.snr_db, low=-math.inf, allow_none=True)
+        _finite("unbalance", self.unbalance)
+        _finite("mesh_amplitude", self.mesh_amplitude)
+        _finite("mesh_modulation", self.mesh_modulation)
+        if self.mesh_modulation > 1.0:
+            raise ValueError(f"masking.mesh_modulation must lie in [0, 1], got {self.mesh_modulation!r}")
+        for name in ("mesh_teeth", "seed"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+                raise ValueError(f"masking.{name} must be an integer >= 0, got {value!r}")
+        if self.mesh_teeth and not self.mesh_amplitude:
+            raise ValueError("masking.mesh_amplitude: a gear mesh (mesh_teeth) needs its amplitude, m/s^2")
+
+    @property
+    def active(self) -> bool:
+        return self.snr_db is not None or self.unbalance > 0 or (self.mesh_teeth > 0 and self.mesh_amplitude > 0)
+
+    def apply(self, t, acceleration, direction, shaft_hz: float, settle: float = 0.0):
+        """The recorded ``acceleration`` (T, 3) m/s² at times ``t`` (T,) s with the masking added:
+        the machine lines along the unit ``direction`` (3,), the noise on every axis at the SNR
+        against the clean signal's RMS along ``direction`` from ``settle`` s on."""
+        t = np.asarray(t, dtype=float)
+        out = np.array(acceleration, dtype=float, copy=True)
+        direction = np.asarray(direction, dtype=float) / np.linalg.norm(direction)
+        phase = 2.0 * np.pi * shaft_hz * t
+        lines = self.unbalance * np.cos(phase)
+        if self.mesh_teeth:
+            lines = lines + self.mesh_amplitude * (1.0 + self.mesh_modulation * np.cos(phase)) * np.cos(
+                self.mesh_teeth * phase)
+        clean = out[t >= settle] @ direction
+        out += np.outer(lines, direction)
+        if self.snr_db is not None:
+            rms = float(np.sqrt(np.mean((clean - np.mean(clean)) ** 2))) if clean.size else 0.0
+            sigma = rms / 10.0 ** (self.snr_db / 20.0)
+            out += np.random.default_rng(self.seed).normal(0.0, sigma, out.shape)
+        return out

@@ -1,0 +1,76 @@
+"""Masking, stated and switchable (issue 50 item 3, in part; MODEL.md §13b): the noise at its
+signal-to-noise ratio and seed, the machine lines at their amplitudes (amplitude modulation's
+closed form for the mesh's sidebands), bad input refused by name, and the kurtogram's band and
+the fault line found under noise."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from exudyn_bearing.studies.masking import Masking
+from exudyn_bearing.studies.vibration import amplitude_spectrum, spectral_peaks
+
+FS = 20000.0
+T = np.arange(int(FS)) / FS
+SHAFT = 29.95
+
+
+def _signal():
+    acc = np.zeros((T.size, 3))
+    acc[:, 0] = 2.0 * np.sin(2 * np.pi * 1000.0 * T)  # RMS √2 along x
+    return acc
+
+
+def test_noise_has_its_signal_to_noise_ratio_and_its_seed():
+    clean = _signal()
+    a = Masking(snr_db=10.0, seed=7).apply(T, clean, (1.0, 0.0, 0.0), SHAFT)
+    b = Masking(snr_db=10.0, seed=7).apply(T, clean, (1.0, 0.0, 0.0), SHAFT)
+    c = Masking(snr_db=10.0, seed=8).apply(T, clean, (1.0, 0.0, 0.0), SHAFT)
+    noise = a - clean
+    want = math.sqrt(2.0) / 10.0 ** 0.5  # RMS / 10^(SNR/20)
+    assert np.std(noise[:, 0]) == pytest.approx(want, rel=0.02) and np.std(noise[:, 2]) == pytest.approx(want, rel=0.02)
+    assert np.array_equal(a, b) and not np.array_equal(a, c)
+    assert np.array_equal(clean, _signal())  # the recorded signal itself is not changed in place
+
+
+def test_machine_lines_read_their_amplitudes():
+    """Unbalance 0.3 m/s² at the shaft rate; a 23-tooth mesh of 0.5 m/s² modulated 40 % at the
+    shaft rate: A (1 + m cos Ωt) cos zΩt has lines A at zΩ and A m / 2 at zΩ ± Ω."""
+    out = Masking(unbalance=0.3, mesh_teeth=23, mesh_amplitude=0.5, mesh_modulation=0.4).apply(
+        T, np.zeros((T.size, 3)), (1.0, 0.0, 0.0), SHAFT)
+    f, a = amplitude_spectrum(out[:, 0], FS)
+    lines = {round(hz, 1): amp for hz, amp in spectral_peaks(f, a, 4, min_hz=1.0)}
+    for hz, amp in ((SHAFT, 0.3), (23 * SHAFT, 0.5), (22 * SHAFT, 0.1), (24 * SHAFT, 0.1)):
+        near = [v for k, v in lines.items() if abs(k - hz) < 0.2]
+        assert near and near[0] == pytest.approx(amp, rel=0.01), (hz, lines)
+    assert np.allclose(out[:, 1:], 0.0)  # along the given direction only
+
+
+@pytest.mark.parametrize("kw, name", [(dict(snr_db=float("nan")), "snr_db"), (dict(unbalance=-1.0), "unbalance"),
+                                      (dict(mesh_teeth=20), "mesh_amplitude"), (dict(mesh_modulation=1.5), "mesh_modulation"),
+                                      (dict(seed=-1), "seed")])
+def test_masking_refuses_bad_input_by_name(kw, name):
+    with pytest.raises(ValueError, match=f"masking.{name}"):
+        Masking(**kw)
+
+
+def test_masking_is_off_by_default():
+    assert not Masking().active and Masking(snr_db=20.0).active
+
+
+@pytest.mark.slow
+def test_under_noise_the_kurtogram_still_finds_the_notch():
+    """The Case Western notch (0.15 s) with noise at 0 dB and a 0.5-m/s² unbalance line: the band
+    the kurtogram chooses still gives BPFO as the strongest envelope line."""
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import CWRU_6205_BEARING
+    from exudyn_bearing.studies.vibration import vibration
+
+    r = vibration(CWRU_6205_BEARING, rpm=1797, radial_force=300.0, time=0.15,
+                  surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),)),
+                  masking=Masking(snr_db=0.0, unbalance=0.5, seed=3))
+    assert r.band_from == "kurtogram"
+    assert r.envelope_peaks[0][0] == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=0.5)
+    assert "masking" in r.inputs
