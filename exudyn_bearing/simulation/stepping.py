@@ -52,7 +52,7 @@ class PassageStepper:
         self._limit = math.inf  # the step after a cut, until it has grown back
         self._since_cut = 0
         self._start, self._set = None, math.nan
-        self.fine_time = 0.0  # simulated time stepped at the fine step (or below), s
+        self.fine_time = 0.0  # simulated time of the converged steps at the fine step or below, s
         self.fine_steps = 0
 
     def near(self, mbs) -> bool:
@@ -82,21 +82,27 @@ class PassageStepper:
         if self._start is not None and abs(start - self._start) <= 1e-12 * max(1.0, abs(start)):
             # the same step again: Exudyn cut it (its own reduced step is in currentStepSize)
             self._limit, self._since_cut = min(float(it.currentStepSize), self._set), 0
-        elif self._start is not None and self._limit < math.inf:
-            self._since_cut += 1
-            if self._since_cut >= self.recovery_steps:
-                self._limit, self._since_cut = 2.0 * self._limit, 0
-                if self._limit >= self.coarse:
-                    self._limit = math.inf
+        elif self._start is not None:
+            self.finish()  # the last step converged
+            if self._limit < math.inf:
+                self._since_cut += 1
+                if self._since_cut >= self.recovery_steps:
+                    self._limit, self._since_cut = 2.0 * self._limit, 0
+                    if self._limit >= self.coarse:
+                        self._limit = math.inf
         h = min(self.fine if self.near(mbs) else self.coarse, self._limit)
         h = min(h, float(it.endTime) - start)
-        if h <= self.fine * (1.0 + 1e-9):
-            self.fine_time += h
-            self.fine_steps += 1
         self._start, self._set = start, h
         it.currentStepSize = h
         it.currentTime = start + h
         return True
+
+    def finish(self) -> None:
+        """Count the step last set as taken (at the fine step or below: into ``fine_time``)."""
+        if self._set <= self.fine * (1.0 + 1e-9):
+            self.fine_time += self._set
+            self.fine_steps += 1
+        self._set = math.nan
 
 
 def passage_stepper(handles, settings, windows):
@@ -120,4 +126,7 @@ def solve_with_passages(mbs, simulation_settings, stepper: PassageStepper) -> bo
     mbs.sys["dynamicSolver"] = solver
     mbs.sys["simulationSettings"] = simulation_settings
     solver.SetUserFunctionUpdateCurrentTime(mbs, stepper)
-    return bool(solver.SolveSystem(mbs, simulation_settings))
+    ok = bool(solver.SolveSystem(mbs, simulation_settings))
+    if ok:
+        stepper.finish()  # the last step
+    return ok
