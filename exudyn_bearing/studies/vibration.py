@@ -316,12 +316,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     band, band_from, chart = _envelope_band(band, signal, sample_rate, faults["kinematic"], resonance)
     f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
-    events = defect_events(results, bearing, surface) if surface.defects else []
-    if surface.defects:  # the load at every step: when each contact unloads and is struck
-        states = handle.States(mbs)
-        if any(d.race == "ball" for d in surface.defects):  # a pit's passages: from the balls' recorded rotations
-            events = sorted(events + ball_defect_events(handle.connector, *states), key=lambda e: e["edge_s"])
-        events = read_impacts(handle.connector, events, *states)
+    events = _passage_events(handle, mbs, results, surface)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step,
                            **({} if masking is None else {"masking": masking}))
@@ -344,16 +339,33 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
                           settings=replace(settings, step=0.5 * coarse,
                                            passage_step=0.5 * step if step < coarse else None))
-        (f0, a0), (f1, a1) = out.envelope_peaks[0], finer.envelope_peaks[0]
-        out.error_estimate = {"method": "rerun at half the step", "reference_step_s": 0.5 * step,
-                              "reference_wall_time_s": finer.wall_time_s,
-                              "envelope_line_Hz": abs(f1 - f0), "envelope_amplitude_percent": 100 * abs(a1 - a0) / a1,
-                              # the run's error where the amplitude converges at order >= 1 from its
-                              # step down: at most change / (1 - 2^-1) (MODEL.md §13c)
-                              "envelope_amplitude_bound_percent": 200 * abs(a1 - a0) / a1,
-                              "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent
-                                                            - out.kinematic_cage_slip_percent)}
+        out.error_estimate = _error_estimate(out, finer, 0.5 * step)
     return out
+
+
+def _passage_events(handle, mbs, results, surface) -> list:
+    """The defect passages of a run (:mod:`~exudyn_bearing.studies.passages`): each ball's over
+    each race defect from the outputs, a pit's from the recorded rotations, and what the contact
+    load at every recorded step shows of each (entry, impact, peak)."""
+    if not surface.defects:
+        return []
+    events = defect_events(results, handle.bearing, surface)
+    states = handle.States(mbs)
+    if any(d.race == "ball" for d in surface.defects):
+        events = sorted(events + ball_defect_events(handle.connector, *states), key=lambda e: e["edge_s"])
+    return read_impacts(handle.connector, events, *states)
+
+
+def _error_estimate(run, finer, reference_step) -> dict:
+    """:func:`vibration`'s ``error_estimate`` from the ``run`` and its rerun at half the step."""
+    (f0, a0), (f1, a1) = run.envelope_peaks[0], finer.envelope_peaks[0]
+    return {"method": "rerun at half the step", "reference_step_s": reference_step,
+            "reference_wall_time_s": finer.wall_time_s,
+            "envelope_line_Hz": abs(f1 - f0), "envelope_amplitude_percent": 100 * abs(a1 - a0) / a1,
+            # the run's error where the amplitude converges at order >= 1 from its step down: at
+            # most change / (1 - 2^-1) (MODEL.md §13c)
+            "envelope_amplitude_bound_percent": 200 * abs(a1 - a0) / a1,
+            "kinematic_cage_slip_pp": abs(finer.kinematic_cage_slip_percent - run.kinematic_cage_slip_percent)}
 
 
 def _envelope_band(band, signal, sample_rate, faults, resonance):
