@@ -74,3 +74,49 @@ def test_under_noise_the_kurtogram_still_finds_the_notch():
     assert r.band_from == "kurtogram"
     assert r.envelope_peaks[0][0] == pytest.approx(r.fault_frequencies["actual"]["BPFO"], abs=0.5)
     assert "masking" in r.inputs
+
+
+def test_fluctuation_is_a_band_limited_process_of_its_rms_and_seed():
+    """x(t) = √(2/N) Σ cos(2π f_k t + φ_k): unit RMS over a long run (to a few %), nothing above
+    the bandwidth, the same seed the same process, speed and load drawn apart."""
+    from exudyn_bearing.studies.masking import Fluctuation
+
+    f = Fluctuation(speed_percent=2.0, load_percent=5.0, bandwidth_hz=5.0, components=64, seed=4)
+    t = np.arange(0.0, 200.0, 0.01)
+    x = np.array([f.process("speed")(v) for v in t])
+    assert np.sqrt(np.mean(x * x)) == pytest.approx(1.0, rel=0.05)
+    freq, amp = amplitude_spectrum(x, 100.0)
+    assert np.max(amp[freq > 6.0]) < 0.01 * np.max(amp)
+    assert Fluctuation(seed=4, speed_percent=1.0, components=64).process("speed")(1.23) == f.process("speed")(1.23)
+    assert f.process("load")(1.23) != f.process("speed")(1.23)
+    rpm = f.speed(1800.0)
+    assert rpm(0.7) == pytest.approx(1800.0 * (1 + 0.02 * f.process("speed")(0.7)))
+    assert Fluctuation().speed(1800.0) == 1800.0 and f.load(0.0) == 0.0  # none: the steady value itself
+    with pytest.raises(ValueError, match="fluctuation.bandwidth_hz"):
+        Fluctuation(bandwidth_hz=0.0)
+    with pytest.raises(ValueError, match="below 30"):
+        Fluctuation(speed_percent=40.0)
+
+
+@pytest.mark.slow
+def test_speed_fluctuation_makes_the_passages_jitter():
+    """The Case Western notch, 0.3 s, with the shaft speed fluctuating by 3 % RMS below 20 Hz:
+    the spacing of successive passages of one ball spreads well beyond the steady run's, as the
+    cage follows the shaft (the model's own random slip)."""
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import CWRU_6205_BEARING
+    from exudyn_bearing.studies.masking import Fluctuation
+    from exudyn_bearing.studies.vibration import vibration
+
+    notch = SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))
+
+    def spread(r):
+        edges = np.sort([e["edge_s"] for e in r.defect_events])
+        gaps = np.diff(edges)
+        return float(np.std(gaps) / np.mean(gaps))
+
+    kw = dict(rpm=1797, radial_force=300.0, time=0.3, surface=notch, band=None)
+    steady = vibration(CWRU_6205_BEARING, **kw)
+    varying = vibration(CWRU_6205_BEARING, fluctuation=Fluctuation(speed_percent=3.0, bandwidth_hz=20.0, seed=1), **kw)
+    assert spread(varying) > 5 * spread(steady), (spread(varying), spread(steady))
+    assert "fluctuation" in varying.inputs

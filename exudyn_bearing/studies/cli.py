@@ -159,7 +159,8 @@ def _vibration(args) -> int:
     from dataclasses import replace
 
     from ..races import HousingModel
-    from .vibration import plot_vibration, vibration, write_signal
+    from .vibration import vibration, write_signal
+    from .vibration_plot import plot_vibration
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
@@ -175,7 +176,8 @@ def _vibration(args) -> int:
         warnings.simplefilter("ignore", SurfaceStartWarning)
         result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                            sample_rate=args.sample_rate, settle=args.settle,
-                           band=_band(args.band), error_estimate=args.error_estimate, masking=_masking(args))
+                           band=_band(args.band), error_estimate=args.error_estimate, masking=_masking(args),
+                           fluctuation=_fluctuation(args))
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
@@ -250,6 +252,17 @@ def _masking(args):
                       mesh_amplitude=mesh[1] if mesh else 0.0, mesh_modulation=mesh[2] if len(mesh) > 2 else 0.0,
                       seed=args.seed)
     return masking if masking.active else None
+
+
+def _fluctuation(args):
+    """The :class:`Fluctuation` of ``--speed-fluctuation``, ``--load-fluctuation``,
+    ``--fluctuation-bandwidth`` and ``--seed``, or None (steady)."""
+    from .masking import Fluctuation
+
+    if not (args.speed_fluctuation or args.load_fluctuation):
+        return None
+    return Fluctuation(speed_percent=args.speed_fluctuation, load_percent=args.load_fluctuation,
+                       bandwidth_hz=args.fluctuation_bandwidth, seed=args.seed)
 
 
 def _band(words) -> tuple | str | None:

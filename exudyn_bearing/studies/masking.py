@@ -4,8 +4,9 @@ lines other machine parts put on it — the shaft's unbalance at the shaft rate,
 the shaft with its sidebands. Off by default: a clean study sees the bearing alone.
 
 These are added to the recorded signal, as a measurement would carry them; they are not forces
-on the model (an unbalance's rotating force, which would also move the bearing's loads, and
-random slip from load or speed fluctuations are not built yet).
+on the model (an unbalance's rotating force, which would also move the bearing's loads, is not
+built). Random slip is the model's own: :class:`Fluctuation` makes the shaft speed and the load
+vary as slow random processes, so the cage's slip and the passages' spacing vary with them.
 """
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Masking"]
+__all__ = ["Masking", "Fluctuation"]
 
 
 def _finite(name, value, low=0.0, allow_none=False):
@@ -92,3 +93,61 @@ class Masking:
             sigma = rms / 10.0 ** (self.snr_db / 20.0)
             out += np.random.default_rng(self.seed).normal(0.0, sigma, out.shape)
         return out
+
+
+@dataclass(frozen=True)
+class Fluctuation:
+    """Slow random fluctuations of the shaft speed and the load (MODEL.md §13b): each a sum of
+    ``components`` cosines at frequencies drawn uniformly from (0, ``bandwidth_hz``] with
+    random phases, √(2/N) Σ cos(2π f_k t + φ_k) (unit RMS over a long run), scaled to the RMS
+    share ``speed_percent`` / ``load_percent`` of the mean. ``seed``: the same seed, the same
+    fluctuation (speed and load drawn apart). The bearing starts settled at their values at 0."""
+
+    speed_percent: float = 0.0
+    load_percent: float = 0.0
+    bandwidth_hz: float = 5.0
+    components: int = 16
+    seed: int = 0
+
+    def __post_init__(self) -> None:
+        _finite("speed_percent", self.speed_percent)
+        _finite("load_percent", self.load_percent)
+        if self.speed_percent >= 30.0 or self.load_percent >= 30.0:
+            raise ValueError("fluctuation: speed_percent and load_percent must stay below 30 (an RMS share of the "
+                             f"mean), got {self.speed_percent!r}, {self.load_percent!r}")
+        _finite("bandwidth_hz", self.bandwidth_hz)
+        if not self.bandwidth_hz > 0:
+            raise ValueError(f"fluctuation.bandwidth_hz must be positive, got {self.bandwidth_hz!r}")
+        for name in ("components", "seed"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < (1 if name == "components"
+                                                                                                 else 0):
+                raise ValueError(f"fluctuation.{name} must be an integer >= {1 if name == 'components' else 0}, "
+                                 f"got {value!r}")
+
+    def process(self, which: str):
+        """The unit-RMS random process x(t) of ``which`` ('speed' or 'load'), a function of t s."""
+        rng = np.random.default_rng([self.seed, ("speed", "load").index(which)])
+        freq = rng.uniform(0.0, self.bandwidth_hz, self.components)
+        freq[freq == 0.0] = self.bandwidth_hz
+        phase = rng.uniform(0.0, 2.0 * np.pi, self.components)
+        scale = math.sqrt(2.0 / self.components)
+
+        def x(t):
+            return float(scale * np.sum(np.cos(2.0 * np.pi * freq * t + phase)))
+        return x
+
+    def speed(self, rpm: float):
+        """rpm(t) = rpm (1 + speed_percent/100 · x(t)), or ``rpm`` itself without a speed fluctuation."""
+        if not self.speed_percent:
+            return rpm
+        x, share = self.process("speed"), 0.01 * self.speed_percent
+        return lambda t: rpm * (1.0 + share * x(t))
+
+    def load(self, force: float):
+        """F(t) = F (1 + load_percent/100 · x(t)) N, or ``force`` itself without a load fluctuation."""
+        if not self.load_percent or not force:
+            return force
+        x, share = self.process("load"), 0.01 * self.load_percent
+        return lambda t: force * (1.0 + share * x(t))
+

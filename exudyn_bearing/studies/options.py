@@ -149,7 +149,13 @@ def _vibration_options(p) -> None:
                    help="the shaft's unbalance line on the housing, m/s^2 (default 0)")
     p.add_argument("--mesh", type=float, nargs="+", metavar="X", help="a gear mesh on the shaft: TEETH AMPLITUDE_m/s^2 "
                                                                       "[MODULATION 0-1] (sidebands at +- the shaft)")
-    p.add_argument("--seed", type=int, default=0, help="seed of the noise (default 0)")
+    p.add_argument("--speed-fluctuation", type=float, default=0.0, metavar="PCT",
+                   help="the shaft speed's random fluctuation, RMS %% of the rpm (default 0: steady)")
+    p.add_argument("--load-fluctuation", type=float, default=0.0, metavar="PCT",
+                   help="the load's random fluctuation, RMS %% of the load (default 0: steady)")
+    p.add_argument("--fluctuation-bandwidth", type=float, default=5.0, metavar="HZ",
+                   help="the fluctuations' highest frequency, Hz (default 5)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the noise and the fluctuations (default 0)")
     p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
                                                                  "5 x the highest of BPFO, BPFI, 2 BSF)")
     p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "

@@ -218,7 +218,8 @@ class VibrationResult:
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
               sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | str | None = "auto", settle: float = 0.02,
               surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
-              contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP, masking=None) -> VibrationResult:
+              contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP, masking=None,
+              fluctuation=None) -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, a ``races.HousingModel`` or ``races.Housing(...)``,
     default the setup's, else ``HousingModel()``) for ``time`` s and
@@ -239,7 +240,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     differences of the strongest envelope line (frequency, amplitude) and of the slip, and twice
     the amplitude's: its error bound where the amplitude converges at order >= 1. ``masking``: a
     :class:`~exudyn_bearing.studies.masking.Masking` (measurement noise, machine lines) added to
-    the recorded acceleration before the analysis; None (default): the bearing alone."""
+    the recorded acceleration before the analysis; None (default): the bearing alone.
+    ``fluctuation``: a :class:`~exudyn_bearing.studies.masking.Fluctuation` of the shaft speed
+    and the load (the model's own random slip); None: steady."""
     import exudyn as exu
 
     from ..bearingfile import as_setup
@@ -247,22 +250,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     from ..races import Driven, HousingModel
     from ..model.steprule import reach_share, strike_number
     from ..simulation.runner import SolverSettings, run_solver
+    from .masking import Fluctuation
 
-    if not (math.isfinite(sample_rate) and sample_rate > 0):
-        raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
-    if not (math.isfinite(rpm) and rpm > 0):
-        raise ValueError(f"rpm must be positive, got {rpm!r}")
-    if not (axial_force or radial_force):
-        raise ValueError("no load: give axial_force and/or radial_force, N")
-    if housing is not FROM_SETUP and housing is not None and not isinstance(housing, HousingModel) \
-            and getattr(housing, "kind", None) != "housing":
-        raise ValueError(f"housing must be a races.HousingModel(...) or races.Housing(...), got {housing!r}")
-    from .masking import Masking
-
-    if masking is not None and not isinstance(masking, Masking):
-        raise ValueError(f"masking must be a studies.masking.Masking(...) or None, got {masking!r}")
-    if not (math.isfinite(time) and time > settle >= 0):
-        raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
+    _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation)
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag,
                      surface=surface)
     bearing, surface = setup.bearing, setup.surface
@@ -272,8 +262,10 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
         housing = (setup.housing or HousingModel()).race()
     sc = exu.SystemContainer()
     mbs = sc.AddSystem()
-    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), outerRace=housing,
-                                         axialForce=axial_force, radialForce=radial_force, show=False)
+    vary = fluctuation or Fluctuation()
+    handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(vary.speed(rpm)), outerRace=housing,
+                                         axialForce=vary.load(axial_force), radialForce=vary.load(radial_force),
+                                         show=False)
     sensors = handle.AddVibrationSensors(mbs)
     mbs.Assemble()
     period = 1.0 / sample_rate
@@ -319,7 +311,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     events = _passage_events(handle, mbs, results, surface)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step,
-                           **({} if masking is None else {"masking": masking}))
+                           **({} if masking is None else {"masking": masking}),
+                           **({} if fluctuation is None else {"fluctuation": fluctuation}))
     out = VibrationResult(t, acc, vel, disp, sample_rate, tuple(band), faults,
                           spectral_peaks(f_env, a_env, 10, min_hz=1.0, max_hz=band[1] - band[0]),
                           spectral_peaks(f_sp, a_sp, 10, min_hz=1.0), events,
@@ -337,10 +330,33 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
+                          fluctuation=fluctuation,
                           settings=replace(settings, step=0.5 * coarse,
                                            passage_step=0.5 * step if step < coarse else None))
         out.error_estimate = _error_estimate(out, finer, 0.5 * step)
     return out
+
+
+def _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation):
+    """:func:`vibration`'s inputs, each refused by name where it cannot be run."""
+    from ..races import HousingModel
+    from .masking import Fluctuation, Masking
+
+    if not (math.isfinite(sample_rate) and sample_rate > 0):
+        raise ValueError(f"sample_rate must be positive, got {sample_rate!r}")
+    if not (math.isfinite(rpm) and rpm > 0):
+        raise ValueError(f"rpm must be positive, got {rpm!r}")
+    if not (axial_force or radial_force):
+        raise ValueError("no load: give axial_force and/or radial_force, N")
+    if housing is not FROM_SETUP and housing is not None and not isinstance(housing, HousingModel) \
+            and getattr(housing, "kind", None) != "housing":
+        raise ValueError(f"housing must be a races.HousingModel(...) or races.Housing(...), got {housing!r}")
+    if masking is not None and not isinstance(masking, Masking):
+        raise ValueError(f"masking must be a studies.masking.Masking(...) or None, got {masking!r}")
+    if fluctuation is not None and not isinstance(fluctuation, Fluctuation):
+        raise ValueError(f"fluctuation must be a studies.masking.Fluctuation(...) or None, got {fluctuation!r}")
+    if not (math.isfinite(time) and time > settle >= 0):
+        raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
 
 
 def _passage_events(handle, mbs, results, surface) -> list:
@@ -423,71 +439,3 @@ def write_signal(result: VibrationResult, path) -> None:
     with open(path, "w", encoding="utf-8") as fh:
         fh.write(header + ",".join(cols) + "\n")
         np.savetxt(fh, table, delimiter=",", fmt="%.9g")
-
-
-def plot_vibration(result: VibrationResult, path, title: str = "", envelope_max_hz: float | None = None) -> None:
-    """Time signal, spectrum and envelope spectrum with the fault frequencies: kinematic
-    (dashed) and actual (solid), BPFO/BPFI and their first harmonics, 2 BSF, FTF, and the
-    sidebands a diagnostician looks for (dotted: BPFI ± the shaft, 2 BSF ± FTF, of the actual
-    frequencies); the envelope spectrum up to ``envelope_max_hz`` (default 5 x the highest of
-    BPFO, BPFI, 2 BSF); the kurtogram with the chosen band where the band came from it."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    settle = float(result.inputs.get("settle", 0.0))
-    keep = result.time >= settle
-    load = np.array([float(result.inputs.get("radial_force", 0.0)), 0.0, float(result.inputs.get("axial_force", 0.0))])
-    x = result.acceleration[keep] @ (load / np.linalg.norm(load))  # along the load, as analysed
-    chart = result.kurtogram
-    fig, ax = plt.subplots(3 + (chart is not None), 1, figsize=(9, 9 + 3 * (chart is not None)))
-    ax[0].plot(result.time[keep], x, lw=0.5)
-    ax[0].set(xlabel="t (s)", ylabel="housing acceleration along the load (m/s²)", title=title)
-    f, a = amplitude_spectrum(x, result.sample_rate)
-    ax[1].semilogy(f, np.maximum(a, 1e-12), lw=0.6)
-    ax[1].axvspan(*result.band, color="0.9")
-    ax[1].set(xlabel="f (Hz)", ylabel="amplitude (m/s²)", xlim=(0, 0.5 * result.sample_rate))
-    fe, ae = envelope_spectrum(x, result.sample_rate, result.band)
-    ax[2].plot(fe, ae, lw=0.7, color="k")
-    kin = result.fault_frequencies["kinematic"]
-    fmax = envelope_max_hz or 5.0 * max(kin["BPFI"], kin["BPFO"], 2.0 * kin["BSF"])
-    colors = {"BPFO": "tab:red", "BPFI": "tab:blue", "BSF": "tab:green", "FTF": "tab:orange"}
-    for kind, style in (("kinematic", "--"), ("actual", "-")):
-        for name, value in result.fault_frequencies[kind].items():
-            mult = (2,) if name == "BSF" else (1, 2, 3) if name in ("BPFO", "BPFI") else (1,)
-            for m in mult:
-                ax[2].axvline(m * value, ls=style, lw=0.8, color=colors[name], alpha=0.8,
-                              label=f"{'2 ' if name == 'BSF' else ''}{name} {kind}" if m == mult[0] else None)
-    actual, shaft = result.fault_frequencies["actual"], float(result.inputs.get("rpm", 0.0)) / 60.0
-    for centre, offset, name in ((actual["BPFI"], shaft, "BPFI ± shaft"), (2.0 * actual["BSF"], actual["FTF"],
-                                                                          "2 BSF ± FTF")):
-        for k, sign in enumerate((-1.0, 1.0)):
-            ax[2].axvline(centre + sign * offset, ls=":", lw=0.8, color="0.4", label=name if k == 0 else None)
-    ax[2].set(xlabel="f (Hz)", ylabel="envelope amplitude (m/s²)", xlim=(0, fmax),
-              title=f"envelope spectrum, band {result.band[0]:.0f}–{result.band[1]:.0f} Hz")
-    ax[2].legend(fontsize=7, ncol=4)
-    if chart is not None:
-        _plot_kurtogram(ax[3], chart)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-
-
-def _plot_kurtogram(ax, chart) -> None:
-    """The kurtogram: spectral kurtosis (eq. 13.9) per level (rows) and band, the chosen band boxed."""
-    from matplotlib.patches import Rectangle
-
-    columns = 768  # each level's bands spread over a common frequency grid
-    image = np.array([np.asarray(row)[(np.arange(columns) * len(row)) // columns] for row in chart.kurtosis])
-    nyquist = 0.5 * chart.sample_rate
-    shown = ax.imshow(image, aspect="auto", origin="upper", extent=(0, nyquist, len(chart.levels) - 0.5, -0.5),
-                      cmap="viridis", interpolation="nearest")
-    ax.set_yticks(range(len(chart.levels)), [f"{level:.1f}" for level in chart.levels])
-    row = chart.levels.index(chart.level)
-    ax.add_patch(Rectangle((chart.band[0], row - 0.5), chart.band[1] - chart.band[0], 1.0, fill=False, ec="red",
-                           lw=1.5))
-    ax.set(xlabel="f (Hz)", ylabel="level", title=f"kurtogram (spectral kurtosis, Antoni 2007): band "
-           f"{chart.band[0]:.0f}–{chart.band[1]:.0f} Hz, K = {chart.band_kurtosis:.3g}")
-    ax.figure.colorbar(shown, ax=ax, label="spectral kurtosis")
-
