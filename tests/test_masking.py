@@ -120,3 +120,13 @@ def test_speed_fluctuation_makes_the_passages_jitter():
     varying = vibration(CWRU_6205_BEARING, fluctuation=Fluctuation(speed_percent=3.0, bandwidth_hz=20.0, seed=1), **kw)
     assert spread(varying) > 5 * spread(steady), (spread(varying), spread(steady))
     assert "fluctuation" in varying.inputs
+
+
+@pytest.mark.parametrize("kw, name", [(dict(speed_percent=-1.0), "fluctuation.speed_percent"),
+                                      (dict(load_percent=float("inf")), "fluctuation.load_percent"),
+                                      (dict(components=0), "fluctuation.components")])
+def test_fluctuation_refuses_bad_input_by_name(kw, name):
+    from exudyn_bearing.studies.masking import Fluctuation
+
+    with pytest.raises(ValueError, match=name):
+        Fluctuation(**kw)

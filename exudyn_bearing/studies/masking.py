@@ -19,10 +19,11 @@ __all__ = ["Masking", "Fluctuation"]
 
 
 def _finite(name, value, low=0.0, allow_none=False):
+    """Refuse ``value`` by its ``name`` ('record.field') unless a finite number >= ``low``."""
     if value is None and allow_none:
         return
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < low:
-        raise ValueError(f"masking.{name} must be a finite number >= {low:g}, got {value!r}")
+        raise ValueError(f"{name} must be a finite number >= {low:g}, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -57,10 +58,10 @@ class Masking:
     seed: int = 0
 
     def __post_init__(self) -> None:
-        _finite("snr_db", self.snr_db, low=-math.inf, allow_none=True)
-        _finite("unbalance", self.unbalance)
-        _finite("mesh_amplitude", self.mesh_amplitude)
-        _finite("mesh_modulation", self.mesh_modulation)
+        _finite("masking.snr_db", self.snr_db, low=-math.inf, allow_none=True)
+        _finite("masking.unbalance", self.unbalance)
+        _finite("masking.mesh_amplitude", self.mesh_amplitude)
+        _finite("masking.mesh_modulation", self.mesh_modulation)
         if self.mesh_modulation > 1.0:
             raise ValueError(f"masking.mesh_modulation must lie in [0, 1], got {self.mesh_modulation!r}")
         for name in ("mesh_teeth", "seed"):
@@ -110,12 +111,12 @@ class Fluctuation:
     seed: int = 0
 
     def __post_init__(self) -> None:
-        _finite("speed_percent", self.speed_percent)
-        _finite("load_percent", self.load_percent)
+        _finite("fluctuation.speed_percent", self.speed_percent)
+        _finite("fluctuation.load_percent", self.load_percent)
         if self.speed_percent >= 30.0 or self.load_percent >= 30.0:
             raise ValueError("fluctuation: speed_percent and load_percent must stay below 30 (an RMS share of the "
                              f"mean), got {self.speed_percent!r}, {self.load_percent!r}")
-        _finite("bandwidth_hz", self.bandwidth_hz)
+        _finite("fluctuation.bandwidth_hz", self.bandwidth_hz)
         if not self.bandwidth_hz > 0:
             raise ValueError(f"fluctuation.bandwidth_hz must be positive, got {self.bandwidth_hz!r}")
         for name in ("components", "seed"):
