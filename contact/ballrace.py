@@ -306,6 +306,7 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
     h, slope = surface_terms(terms, race, kin.azimuth, kin.contact_angle, kin.point_radius, ball, r_x)
     rate = kin.penetration_rate + slope * kin.orbit_rate
     tilt = slope / kin.orbit_radius  # dh/dθ over the ball centre's radius (eq. 13.7)
+    turn = None
     if terms.surface.material:
         if ball_rotation is None:
             raise ValueError("with_surface: a ball defect needs ball_rotation, ball_omega, race_axis and race_omega")
@@ -317,6 +318,5 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
         turn = pit[2:].T
         # the contact frame turns with the centre's azimuth: −Q (e·G)/ρ_c along t1 (eq. 13.7b)
         tilt = tilt - np.einsum("ij,ij->i", turn, race_axis) / kin.orbit_radius
-        return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt,
-                       surface_turn=turn)
-    return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt)
+    return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt,
+                   surface_turn=turn)

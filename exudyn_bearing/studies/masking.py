@@ -26,6 +26,12 @@ def _finite(name, value, low=0.0, allow_none=False):
         raise ValueError(f"{name} must be a finite number >= {low:g}, got {value!r}")
 
 
+def _whole(name, value, low=0):
+    """Refuse ``value`` by its ``name`` ('record.field') unless an integer >= ``low``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
+        raise ValueError(f"{name} must be an integer >= {low}, got {value!r}")
+
+
 @dataclass(frozen=True)
 class Masking:
     """Masking of the housing acceleration (SI units).
@@ -64,10 +70,8 @@ class Masking:
         _finite("masking.mesh_modulation", self.mesh_modulation)
         if self.mesh_modulation > 1.0:
             raise ValueError(f"masking.mesh_modulation must lie in [0, 1], got {self.mesh_modulation!r}")
-        for name in ("mesh_teeth", "seed"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-                raise ValueError(f"masking.{name} must be an integer >= 0, got {value!r}")
+        _whole("masking.mesh_teeth", self.mesh_teeth)
+        _whole("masking.seed", self.seed)
         if self.mesh_teeth and not self.mesh_amplitude:
             raise ValueError("masking.mesh_amplitude: a gear mesh (mesh_teeth) needs its amplitude, m/s^2")
 
@@ -119,12 +123,8 @@ class Fluctuation:
         _finite("fluctuation.bandwidth_hz", self.bandwidth_hz)
         if not self.bandwidth_hz > 0:
             raise ValueError(f"fluctuation.bandwidth_hz must be positive, got {self.bandwidth_hz!r}")
-        for name in ("components", "seed"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < (1 if name == "components"
-                                                                                                 else 0):
-                raise ValueError(f"fluctuation.{name} must be an integer >= {1 if name == 'components' else 0}, "
-                                 f"got {value!r}")
+        _whole("fluctuation.components", self.components, 1)
+        _whole("fluctuation.seed", self.seed)
 
     def process(self, which: str):
         """The unit-RMS random process x(t) of ``which`` ('speed' or 'load'), a function of t s."""

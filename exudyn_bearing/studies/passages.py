@@ -133,10 +133,10 @@ def read_impacts(connector, events, time, q, q_t, unload_share: float = UNLOAD_S
     """The passages ``events`` (:func:`defect_events`, :func:`ball_defect_events`: "edge_s" the
     contact centre reaching the entry edge) as the simulated contact load shows them (MODEL.md
     eq. 13.8), from the recorded states (``time`` (T,) s, absolute coordinates and velocities
-    (T, 6 n_nodes): ``handle.States(mbs)``, recorded every step). Each event gains
-    "entry_s" (the load has fallen
-    ``unload_share`` below its value before the passage, the median over one passage length
-    before the edge: the contact starts to unload; None where it never does), "impact_s" (after
+    (T, 6 n_nodes): ``handle.States(mbs)``, recorded every step). Each event gains "entry_s"
+    (the load has fallen ``unload_share`` below its value before the passage, the median over
+    one passage length before the edge: the contact starts to unload; None where it never
+    does), "impact_s" (after
     the load's least value, where it rises fastest: the ball strikes the exit side), "peak_N"
     (the greatest load from that least value to one passage length after the exit),
     "load_before_N", and for a race defect "impact_estimate_s" (eq. 13.8's x_i over the
@@ -153,12 +153,13 @@ def read_impacts(connector, events, time, q, q_t, unload_share: float = UNLOAD_S
     t_kept = time[idx]
     out = []
     for e, span in spans:
-        race = e.get("race") or connector.surface.defects[e["defect"]].race
+        pit = "race" in e  # a ball's pit names the race it passes; a race defect is on its race
+        race = e["race"] if pit else connector.surface.defects[e["defect"]].race
         k = 0 if race == "inner" else 1
         rows = (t_kept >= e["edge_s"] - span) & (t_kept <= e["exit_s"] + span)
         out.append({**e, **_read_one(t_kept[rows], loads[rows, k, e["ball"]], e["edge_s"], e["exit_s"], span,
                                      unload_share), "race": race})
-        if race != "ball" and "race" not in e:
+        if not pit:
             out[-1].update(_estimate(connector, e, race, out[-1]["load_before_N"], unload_share))
     return out
 

@@ -19,7 +19,7 @@ from ..setup import FROM_SETUP
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
-           "sampled_signal", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
+           "sampled_signal", "check_band", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
            "vibration"]
 
 #: the fault frequencies, in the order printed
@@ -123,18 +123,25 @@ def sampled_signal(times, values, sample_rate: float, step: float | None = None)
     return fine[::m], sosfiltfilt(sos, x, axis=0)[::m]
 
 
-def envelope_spectrum(signal, sample_rate: float, band: tuple):
-    """(frequencies Hz, amplitude) of the envelope: band-pass ``band`` (Hz, 4th-order
-    Butterworth, forward and backward), Hilbert envelope, its amplitude spectrum."""
-    from scipy.signal import butter, hilbert, sosfiltfilt
-
-    low, high = band
+def check_band(band, sample_rate: float) -> tuple:
+    """(low, high) Hz of an envelope ``band``, refused by name unless 0 < low < high < the Nyquist
+    frequency of ``sample_rate`` Hz (a reversed band with its own message)."""
+    low, high = (float(v) for v in band)
     nyquist = 0.5 * sample_rate
     if low >= high:
         raise ValueError(f"band: the low edge {low:g} Hz is not below the high edge {high:g} Hz (reversed?); "
                          "give LOW then HIGH")
     if not 0 < low < high < nyquist:
         raise ValueError(f"band: ({low}, {high}) Hz must lie inside (0, {nyquist:g}) Hz, the Nyquist frequency")
+    return low, high
+
+
+def envelope_spectrum(signal, sample_rate: float, band: tuple):
+    """(frequencies Hz, amplitude) of the envelope: band-pass ``band`` (Hz, 4th-order
+    Butterworth, forward and backward), Hilbert envelope, its amplitude spectrum."""
+    from scipy.signal import butter, hilbert, sosfiltfilt
+
+    low, high = check_band(band, sample_rate)
     sos = butter(4, [low, high], btype="bandpass", fs=sample_rate, output="sos")
     env = np.abs(hilbert(sosfiltfilt(sos, np.asarray(signal, dtype=float))))
     return amplitude_spectrum(env, sample_rate)
@@ -252,7 +259,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     from ..simulation.runner import SolverSettings, run_solver
     from .masking import Fluctuation
 
-    _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation)
+    _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation, band)
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contact_law, cage=cage, drag=ball_drag,
                      surface=surface)
     bearing, surface = setup.bearing, setup.surface
@@ -337,8 +344,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     return out
 
 
-def _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation):
-    """:func:`vibration`'s inputs, each refused by name where it cannot be run."""
+def _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, settle, masking, fluctuation, band):
+    """:func:`vibration`'s inputs, each refused by name before the run where it cannot be run."""
     from ..races import HousingModel
     from .masking import Fluctuation, Masking
 
@@ -357,6 +364,11 @@ def _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, se
         raise ValueError(f"fluctuation must be a studies.masking.Fluctuation(...) or None, got {fluctuation!r}")
     if not (math.isfinite(time) and time > settle >= 0):
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
+    if isinstance(band, str):
+        if band != "auto":
+            raise ValueError(f"band must be 'auto', None or (low, high) Hz, got {band!r}")
+    elif band is not None:
+        check_band(band, sample_rate)
 
 
 def _passage_events(handle, mbs, results, surface) -> list:
@@ -391,9 +403,7 @@ def _envelope_band(band, signal, sample_rate, faults, resonance):
     housing = (0.6 * resonance, min(1.4 * resonance, corner))
     if band is None:
         return housing, "housing", None
-    if isinstance(band, str):
-        if band != "auto":
-            raise ValueError(f"band must be 'auto', None or (low, high) Hz, got {band!r}")
+    if isinstance(band, str):  # "auto" (_check_inputs refused any other word)
         from .kurtogram import kurtogram
 
         top = max(faults["BPFO"], faults["BPFI"], 2.0 * faults["BSF"])
@@ -403,11 +413,7 @@ def _envelope_band(band, signal, sample_rate, faults, resonance):
         except ValueError:  # no band that wide above 5 x the faults below the corner: the housing's
             return housing, "housing", None
         return chart.band, "kurtogram", chart
-    low, high = (float(v) for v in band)
-    if low >= high:
-        raise ValueError(f"band: the low edge {low:g} Hz is not below the high edge {high:g} Hz (reversed?); "
-                         "give LOW then HIGH")
-    return (low, high), "given", None
+    return check_band(band, sample_rate), "given", None
 
 
 def _steps(handle, settings, rpm, period):
