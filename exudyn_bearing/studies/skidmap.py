@@ -11,11 +11,8 @@ import csv
 import itertools
 import json
 import math
-import multiprocessing
 import os
-import pickle
 import time as _time
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 
@@ -33,6 +30,7 @@ from ..renamed import accepts_old_names
 from ..results.records import setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup
 from ..solvers.steady import steady_state
+from .grid import check_picklable, guard_folder, read_journal, run_cases
 from .skidmap_report import plot_skid_map, skid_map_markdown
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
@@ -270,49 +268,14 @@ class SkidMap:
 
 
 def _load_done(path: Path) -> dict:
-    done = {}
-    if path.exists():
-        for line in path.read_text().splitlines():
-            if line.strip():
-                try:
-                    p = SkidPoint(**json.loads(line))
-                except (json.JSONDecodeError, TypeError):
-                    continue  # a line cut by an interruption
-                if p.error is None:  # failed points are run again
-                    done[p.key] = p
-                else:
-                    done.pop(p.key, None)
-    return done
+    return read_journal(path, lambda data: SkidPoint(**data))
 
 
 def _check_inputs(folder: Path, setup: BearingSetup) -> None:
     """Record the map's inputs in ``folder/inputs.json``; a resume into a folder whose
     points came from other inputs is refused (it would serve results of another bearing,
     oil, law, surface or housing)."""
-    record = setup_inputs(setup)
-    path = folder / "inputs.json"
-    if path.exists():
-        try:
-            old = json.loads(path.read_text())
-        except json.JSONDecodeError:
-            old = None
-        if old != record:
-            changed = sorted(k for k in set(record) | set(old or {}) if old is None or old.get(k) != record.get(k))
-            raise ValueError(f"out: {folder} holds a skid map computed from other inputs ({', '.join(changed)} "
-                             "differ); use another --out folder or delete it")
-    elif (folder / "points.jsonl").exists():
-        raise ValueError(f"out: {folder} holds points with no record of their inputs (an older version); "
-                         "use another --out folder or delete it")
-    else:
-        path.write_text(json.dumps(record, indent=1))
-
-
-def _one_thread_per_worker():
-    """Pool initializer: the points already run in parallel processes, so each keeps its
-    contact kernels on one thread (more threads than cores slow every process down)."""
-    import numba
-
-    numba.set_num_threads(1)
+    guard_folder(folder, setup_inputs(setup), "a skid map", "points.jsonl")
 
 
 @accepts_old_names
@@ -381,12 +344,7 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     # the terms registered in this process (contact.terms.register_term) go with every point:
     # a worker process registers them again
     registered = applied_terms(setup.contact_law)
-    if registered and (client is not None or (workers or os.cpu_count() or 1) > 1):
-        try:
-            pickle.dumps(registered)
-        except Exception as err:  # noqa: BLE001 - any pickling failure
-            raise ValueError(f"registered terms {[n for n, _ in registered]}: the skid map's worker processes need "
-                             f"them picklable (numba functions at a module's top level): {err}") from None
+    check_picklable(registered, client is not None or (workers or os.cpu_count() or 1) > 1)
     jobs = [(p, setup, registered) for p in todo]
 
     def record(data):
@@ -405,24 +363,7 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
             progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
                      f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
 
-    if client is not None:
-        futures = client.map(_run_point, jobs, pure=False)
-        from dask.distributed import as_completed as dask_completed
-
-        for fut in dask_completed(futures):
-            record(fut.result())
-    elif todo:
-        n = workers or os.cpu_count() or 1
-        if n == 1:
-            for job in jobs:
-                record(_run_point(job))
-        else:
-            # spawned, not forked: a process that has run the compiled contacts holds GNU
-            # OpenMP threads, and forking it aborts the child
-            with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn"),
-                                     initializer=_one_thread_per_worker) as pool:
-                for fut in as_completed([pool.submit(_run_point, job) for job in jobs]):
-                    record(fut.result())
+    run_cases(_run_point, jobs, record, workers=workers, client=client)
     order = {p.key: i for i, p in enumerate(grid)}
     result.points.sort(key=lambda p: order[p.key])
     if refine:

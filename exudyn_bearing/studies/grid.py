@@ -1,0 +1,99 @@
+"""Runs over a grid of cases, shared by the skid map and the vibration data sets: a journal
+of finished cases (one JSON line each, appended as they arrive, so an interrupted grid keeps
+what it has), a folder that remembers the inputs its cases came from (a resume with other
+inputs is refused), and the cases run in local processes or on a Dask cluster.
+"""
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+import pickle
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
+
+__all__ = ["guard_folder", "read_journal", "check_picklable", "run_cases"]
+
+
+def guard_folder(folder: Path, record: dict, what: str, journal: str) -> None:
+    """Record the inputs ``record`` in ``folder/inputs.json``; refuse a ``folder`` whose
+    cases came from other inputs (a resume would serve results of another bearing, oil, law,
+    surface or option), or whose ``journal`` has no record of its inputs."""
+    path = folder / "inputs.json"
+    if path.exists():
+        try:
+            old = json.loads(path.read_text())
+        except json.JSONDecodeError:
+            old = None
+        if old != record:
+            changed = sorted(k for k in set(record) | set(old or {}) if old is None or old.get(k) != record.get(k))
+            raise ValueError(f"out: {folder} holds {what} computed from other inputs ({', '.join(changed)} "
+                             "differ); use another --out folder or delete it")
+    elif (folder / journal).exists():
+        raise ValueError(f"out: {folder} holds {what} with no record of its inputs (an older version); "
+                         "use another --out folder or delete it")
+    else:
+        path.write_text(json.dumps(record, indent=1))
+
+
+def read_journal(path: Path, make) -> dict:
+    """{key: case} of the finished cases in the journal ``path``: ``make`` turns a line's dict
+    into a case with ``key`` and ``error``; a failed case (``error`` set) is left to run again,
+    a line cut by an interruption skipped."""
+    done = {}
+    if path.exists():
+        for line in path.read_text().splitlines():
+            if line.strip():
+                try:
+                    case = make(json.loads(line))
+                except (json.JSONDecodeError, TypeError):
+                    continue
+                if case.error is None:
+                    done[case.key] = case
+                else:
+                    done.pop(case.key, None)
+    return done
+
+
+def check_picklable(registered, parallel: bool) -> None:
+    """Refuse registered contact terms (``contact.terms.register_term``) that worker processes
+    cannot receive."""
+    if registered and parallel:
+        try:
+            pickle.dumps(registered)
+        except Exception as err:  # noqa: BLE001 - any pickling failure
+            raise ValueError(f"registered terms {[n for n, _ in registered]}: the worker processes need "
+                             f"them picklable (numba functions at a module's top level): {err}") from None
+
+
+def one_thread_per_worker():
+    """Pool initializer: the cases already run in parallel processes, so each keeps its
+    contact kernels on one thread (more threads than cores slow every process down)."""
+    import numba
+
+    numba.set_num_threads(1)
+
+
+def run_cases(worker, jobs: list, record, workers: int | None = None, client=None) -> None:
+    """``record(worker(job))`` for every job as it finishes: on the Dask ``client``, else in
+    ``workers`` local processes (default: the CPU count; 1: in this process). ``worker`` must
+    never raise (a failed case reports itself) and be importable at a module's top level."""
+    if client is not None:
+        from dask.distributed import as_completed as dask_completed
+
+        for fut in dask_completed(client.map(worker, jobs, pure=False)):
+            record(fut.result())
+        return
+    if not jobs:
+        return
+    n = workers or os.cpu_count() or 1
+    if n == 1:
+        for job in jobs:
+            record(worker(job))
+        return
+    # spawned, not forked: a process that has run the compiled contacts holds GNU OpenMP
+    # threads, and forking it aborts the child
+    with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn"),
+                             initializer=one_thread_per_worker) as pool:
+        for fut in as_completed([pool.submit(worker, job) for job in jobs]):
+            record(fut.result())
