@@ -424,6 +424,30 @@ def test_plot_run_and_plot_skid_curve(reference_run, tmp_path):
     assert_real_png(tmp_path / "curve.png", min_bytes=15_000)
 
 
+def test_dataset_writes_labelled_cases_in_worker_processes(tmp_path):
+    """`dataset` in two worker processes: one NPZ per case and a row in index.csv; the housing
+    and masking options reach every case (recorded in inputs.json and each case's inputs), the
+    noise seeded per case; a second run resumes without running."""
+    args = ["dataset", "--faults", "none,outer", "--sizes", "0.001", "--time", "0.03", "--settle", "0.005",
+            "--housing-frequency", "4000", "--snr", "20", "--seed", "3", "--out", "set", "--workers", "2"]
+    proc, _ = cli(*args, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    rows = _read_csv(tmp_path / "set" / "index.csv")
+    assert [(r["fault"], float(r["size_m"])) for r in rows] == [("none", 0.0), ("outer", 0.001)]
+    assert sorted(int(r["seed"]) for r in rows) == [3, 4]
+    record = json.loads((tmp_path / "set" / "inputs.json").read_text())
+    assert "frequency=4000" in record["housing"] and "snr_db=20" in record["dataset_settings"]
+    for r in rows:
+        case = np.load(tmp_path / "set" / r["file"])
+        inputs = json.loads(str(case["inputs"]))
+        assert "snr_db=20" in inputs["masking"]
+        stiffness = float(re.search(r"support=\(([0-9.e+]+)", inputs["housing"]).group(1))
+        assert stiffness == pytest.approx(2.0 * (2 * math.pi * 4000.0) ** 2, rel=1e-9)  # 2 kg at 4 kHz
+        assert case["t_s"].size == 601
+    again, _ = cli(*args, cwd=tmp_path)
+    assert again.returncode == 0 and "resuming: 2 of 2" in again.stdout, again.stderr[-2000:]
+
+
 # ---------------------------------------------------------------------------- bad input
 
 
@@ -446,6 +470,10 @@ BAD_INPUT = [
     pytest.param(["skid-map", "--axial", "1300:3000:0", "--rpm", "1800", "--time", "0.002", "--out", "m"],
                  r"1300:3000:0", id="skid-map-empty-range"),
     pytest.param(["render", "--frames", "0", "--out", "r"], r"frames", id="render-zero-frames"),
+    pytest.param(["dataset", "--faults", "cage", "--out", "d"], r"faults", id="dataset-unknown-fault"),
+    pytest.param(["dataset", "--sizes", "0", "--out", "d"], r"sizes", id="dataset-zero-size"),
+    pytest.param(["dataset", "--depth", "-1", "--out", "d"], r"depth", id="dataset-negative-depth"),
+    pytest.param(["dataset", "--bearing", "faulty.toml", "--out", "d"], r"defect", id="dataset-file-with-defects"),
     pytest.param(["render", "--axial", "-5", "--out", "r"], r"axial", id="render-negative-axial"),
     pytest.param(["simulate", "--axial", "1300", "--time", "0.002", "--bearing", "missing.toml"], r"missing\.toml",
                  id="simulate-missing-bearing-file"),
@@ -474,6 +502,12 @@ BAD_INPUT = [
 @pytest.mark.parametrize("args, names", BAD_INPUT)
 def test_bad_input_is_an_error_message_not_a_traceback(args, names, tmp_path):
     (tmp_path / "broken.toml").write_text("[bearing]\nballs = = 6\n")
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import REFERENCE_BEARING
+    from exudyn_bearing.bearingfile import BearingFile, dumps_bearing
+
+    (tmp_path / "faulty.toml").write_text(dumps_bearing(BearingFile(
+        REFERENCE_BEARING, surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 1e-5),)))))
     proc, _ = cli(*args, cwd=tmp_path, timeout=120)
     assert proc.returncode != 0, proc.stdout[-2000:]
     assert "Traceback" not in proc.stderr, proc.stderr[-2000:]

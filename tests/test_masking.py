@@ -50,14 +50,39 @@ def test_machine_lines_read_their_amplitudes():
 
 @pytest.mark.parametrize("kw, name", [(dict(snr_db=float("nan")), "snr_db"), (dict(unbalance=-1.0), "unbalance"),
                                       (dict(mesh_teeth=20), "mesh_amplitude"), (dict(mesh_modulation=1.5), "mesh_modulation"),
-                                      (dict(seed=-1), "seed")])
+                                      (dict(seed=-1), "seed"), (dict(modes=((5000.0, 0.02),)), r"modes\[0\]"),
+                                      (dict(modes=((5000.0, 0.0, 1.0),)), r"modes\[0\] damping"),
+                                      (dict(modes=((float("nan"), 0.02, 1.0),)), r"modes\[0\] frequency")])
 def test_masking_refuses_bad_input_by_name(kw, name):
     with pytest.raises(ValueError, match=f"masking.{name}"):
         Masking(**kw)
 
 
+@pytest.mark.parametrize("ratio", [0.6, 1.0, 1.5])
+def test_a_housing_mode_answers_a_force_as_its_closed_form(ratio):
+    """A sine force F0 sin(2π f t) on a mode (f0, ζ, m): after the start has died away its
+    acceleration's amplitude is F0 f² / (m √((f0² − f²)² + (2ζ f0 f)²)), on the force's axis only."""
+    from exudyn_bearing.studies.masking import mode_acceleration
+
+    f0, zeta, mass, f = 5000.0, 0.03, 4.0, 5000.0 * ratio
+    t = np.arange(20000) / 200000.0  # 0.1 s at 200 kHz (band-limited: one line)
+    force = np.zeros((t.size, 3))
+    force[:, 1] = 50.0 * np.sin(2 * np.pi * f * t)
+    acc = mode_acceleration(t, force, f0, zeta, mass)
+    late = t > 0.05  # the start's ringing has decayed by e^(-ζ ω0 t) < 1e-20
+    want = 50.0 * f * f / (mass * math.sqrt((f0 * f0 - f * f) ** 2 + (2 * zeta * f0 * f) ** 2))
+    # (0.05 s is a whole number of periods at each f: √2 RMS is the amplitude)
+    assert math.sqrt(2.0 * np.mean(acc[late, 1] ** 2)) == pytest.approx(want, rel=1e-3)
+    assert np.allclose(acc[:, [0, 2]], 0.0)
+
+
+def test_masking_modes_need_the_force():
+    with pytest.raises(ValueError, match="masking.modes"):
+        Masking(modes=((5000.0, 0.02, 1.0),)).apply(T, _signal(), (1.0, 0.0, 0.0), SHAFT)
+
+
 def test_masking_is_off_by_default():
-    assert not Masking().active and Masking(snr_db=20.0).active
+    assert not Masking().active and Masking(snr_db=20.0).active and Masking(modes=((5000.0, 0.02, 1.0),)).active
 
 
 @pytest.mark.slow
@@ -130,3 +155,32 @@ def test_fluctuation_refuses_bad_input_by_name(kw, name):
 
     with pytest.raises(ValueError, match=name):
         Fluctuation(**kw)
+
+
+@pytest.mark.slow
+def test_a_housing_mode_shows_in_the_run_at_its_frequency_and_height():
+    """The Case Western notch (0.1 s) with a 6-kHz mode (ζ 0.03, 3 kg) between the seat and the
+    sensor: what it adds to the recorded acceleration, over the bearing's force on the housing
+    (read from the modelled housing's motion, F = m a + c v + k x), peaks at 6 kHz at
+    1 / (2 ζ m) within 10 % (a Welch estimate H1 = S_Fa / S_FF)."""
+    from scipy.signal import csd, welch
+
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import CWRU_6205_BEARING
+    from exudyn_bearing.races import HousingModel
+    from exudyn_bearing.studies.vibration import vibration
+
+    kw = dict(rpm=1797, radial_force=300.0, time=0.1, surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),)),
+              band=None, housing=HousingModel(frequency=3000.0, mass=2.0, damping_ratio=0.05))
+    clean = vibration(CWRU_6205_BEARING, **kw)
+    mode = vibration(CWRU_6205_BEARING, masking=Masking(modes=((6000.0, 0.03, 3.0),)), **kw)
+    k, m = 2.0 * (2 * math.pi * 3000.0) ** 2, 2.0  # the housing as given, typed in here
+    c = 2 * 0.05 * math.sqrt(k * m)
+    force = m * clean.acceleration[:, 0] + c * clean.velocity[:, 0] + k * clean.displacement[:, 0]
+    added = mode.acceleration[:, 0] - clean.acceleration[:, 0]
+    f, s_ff = welch(force, fs=clean.sample_rate, nperseg=512)
+    _, s_fa = csd(force, added, fs=clean.sample_rate, nperseg=512)
+    h = np.abs(s_fa / s_ff)
+    i = int(np.argmax(h * (f > 1000)))
+    assert f[i] == pytest.approx(6000.0, abs=2 * (f[1] - f[0]))
+    assert h[i] == pytest.approx(1.0 / (2 * 0.03 * 3.0), rel=0.1)

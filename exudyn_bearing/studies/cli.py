@@ -156,20 +156,12 @@ def _defect_lines(setup, reaches) -> list:
 def _vibration(args) -> int:
     from pathlib import Path
 
-    from dataclasses import replace
-
-    from ..races import HousingModel
     from .vibration import vibration, write_signal
     from .vibration_plot import plot_vibration
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
-    setup = _setup(args)
-    # the file's [housing] (else HousingModel()), with what the options change
-    housing = setup.housing or HousingModel()
-    changes = {k: v for k, v in (("frequency", args.housing_frequency), ("mass", args.housing_mass),
-                                 ("damping_ratio", args.housing_damping)) if v is not None}
-    setup = setup.replace(housing=replace(housing, **changes))
+    setup = _housed_setup(args)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     with warnings.catch_warnings():  # the surface start's outcome is a line of this command's report
@@ -239,8 +231,60 @@ def _vibration(args) -> int:
     return 0
 
 
+def _housed_setup(args) -> BearingSetup:
+    """:func:`_setup` on the file's [housing] (else ``HousingModel()``) with what --housing-* change."""
+    from dataclasses import replace
+
+    from ..races import HousingModel
+
+    setup = _setup(args)
+    changes = {k: v for k, v in (("frequency", args.housing_frequency), ("mass", args.housing_mass),
+                                 ("damping_ratio", args.housing_damping)) if v is not None}
+    return setup.replace(housing=replace(setup.housing or HousingModel(), **changes))
+
+
+def _client(scheduler):
+    """The Dask client of ``--scheduler`` (None without one)."""
+    if not scheduler:
+        return None
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise ValueError("--scheduler needs dask[distributed]: pip install -e .[dask]") from None
+    try:
+        return Client(scheduler, timeout="10s")
+    except (OSError, TimeoutError) as err:
+        raise ValueError(f"--scheduler: cannot reach {scheduler} ({str(err).splitlines()[0][:120]})") from None
+
+
+def _dataset(args) -> int:
+    from . import dataset, skidmap
+
+    settings = dataset.CaseSettings(time=args.time, sample_rate=args.sample_rate, settle=args.settle,
+                                    band=_band(args.band), depth=args.depth, masking=_masking(args),
+                                    fluctuation=_fluctuation(args))
+    faults = [f.strip() for f in args.faults.split(",") if f.strip()]
+    print(f"vibration data set of {'the reference bearing' if not args.bearing else args.bearing}: faults "
+          f"{','.join(faults)}, sizes {args.sizes} m, axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
+          f"{args.time:g} s per case -> {args.out}", flush=True)
+    with warnings.catch_warnings():  # a surface start's outcome is in each case's inputs
+        warnings.simplefilter("ignore", SurfaceStartWarning)
+        result = dataset.dataset(_housed_setup(args), out=args.out, faults=faults,
+                                 sizes=skidmap.parse_range(args.sizes), axial_force=skidmap.parse_range(args.axial),
+                                 radial_force=skidmap.parse_range(args.radial), rpm=skidmap.parse_range(args.rpm),
+                                 settings=settings, workers=args.workers, client=_client(args.scheduler),
+                                 progress=lambda line: print(line, flush=True))
+    print(f"wrote {len(result.cases)} cases to {args.out}/ (index.csv, inputs.json, one NPZ per case; "
+          "pandas.read_csv(index.csv), numpy.load(<case>.npz))")
+    failed = [c for c in result.cases if c.error]
+    if failed:
+        raise RuntimeError(f"{len(failed)} of {len(result.cases)} cases failed (first: {failed[0].name}: "
+                           f"{failed[0].error}); a second run retries them")
+    return 0
+
+
 def _masking(args):
-    """The :class:`Masking` of ``--snr``, ``--unbalance``, ``--mesh`` and ``--seed``, or None."""
+    """The :class:`Masking` of ``--snr``, ``--unbalance``, ``--mesh``, ``--housing-mode`` and ``--seed``, or None."""
     from .masking import Masking
 
     mesh = args.mesh or []
@@ -250,7 +294,7 @@ def _masking(args):
         raise ValueError(f"--mesh: TEETH must be a whole number, got {mesh[0]:g}")
     masking = Masking(snr_db=args.snr, unbalance=args.unbalance, mesh_teeth=int(mesh[0]) if mesh else 0,
                       mesh_amplitude=mesh[1] if mesh else 0.0, mesh_modulation=mesh[2] if len(mesh) > 2 else 0.0,
-                      seed=args.seed)
+                      seed=args.seed, modes=tuple(args.housing_mode or ()))
     return masking if masking.active else None
 
 
@@ -338,16 +382,7 @@ def _skid_map(args) -> int:
     from . import skidmap
 
     setup = _setup(args)
-    client = None
-    if args.scheduler:
-        try:
-            from dask.distributed import Client
-        except ImportError:
-            raise ValueError("--scheduler needs dask[distributed]: pip install -e .[dask]") from None
-        try:
-            client = Client(args.scheduler, timeout="10s")
-        except (OSError, TimeoutError) as err:
-            raise ValueError(f"--scheduler: cannot reach {args.scheduler} ({str(err).splitlines()[0][:120]})") from None
+    client = _client(args.scheduler)
     print(f"skid-risk map of {'the reference bearing' if not args.bearing else args.bearing}: "
           f"axial {args.axial}, radial {args.radial}, rpm {args.rpm}, "
           f"{'until settled' if args.time is None else f'{args.time:g} s'} per point -> {args.out}", flush=True)
@@ -415,7 +450,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=versions)
     sub = parser.add_subparsers(dest="command", required=True)
     run = {"loads": _loads, "simulate": _simulate, "steady": _steady, "render": _render, "vibration": _vibration,
-           "skid-map": _skid_map}
+           "skid-map": _skid_map, "dataset": _dataset}
     for name, (text, add_options) in COMMANDS.items():
         # every command's --help shows the defaults
         p = sub.add_parser(name, help=text, formatter_class=DefaultsFormatter)

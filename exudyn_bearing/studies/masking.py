@@ -54,6 +54,13 @@ class Masking:
         each mesh_amplitude × mesh_modulation / 2.
     seed : int
         Seed of the noise: the same seed, the same noise.
+    modes : tuple of (frequency Hz, damping ratio, modal mass kg)
+        The housing's further resonances between the bearing seat and the sensor: each a mode
+        driven by the force the bearing puts on the housing (from the modelled housing's own
+        motion, F = m a + c v + k x) whose acceleration adds to the recorded one (modal
+        superposition, MODEL.md §13b). The bearing feels only the modelled housing: the modes'
+        motion does not act back on its contacts (sound where their modal masses are large
+        against the ring's). Empty: the modelled housing alone.
     """
 
     snr_db: float | None = None
@@ -62,6 +69,7 @@ class Masking:
     mesh_amplitude: float = 0.0
     mesh_modulation: float = 0.0
     seed: int = 0
+    modes: tuple = ()
 
     def __post_init__(self) -> None:
         _finite("masking.snr_db", self.snr_db, low=-math.inf, allow_none=True)
@@ -74,17 +82,34 @@ class Masking:
         _whole("masking.seed", self.seed)
         if self.mesh_teeth and not self.mesh_amplitude:
             raise ValueError("masking.mesh_amplitude: a gear mesh (mesh_teeth) needs its amplitude, m/s^2")
+        modes = tuple(tuple(m) for m in self.modes)
+        for i, mode in enumerate(modes):
+            if len(mode) != 3:
+                raise ValueError(f"masking.modes[{i}] must be (frequency Hz, damping ratio, modal mass kg), got {mode!r}")
+            for name, value in zip(("frequency", "damping ratio", "modal mass"), mode):
+                _finite(f"masking.modes[{i}] {name}", value)
+                if not value > 0:
+                    raise ValueError(f"masking.modes[{i}] {name} must be positive, got {value!r}")
+        object.__setattr__(self, "modes", tuple(tuple(float(v) for v in m) for m in modes))
 
     @property
     def active(self) -> bool:
-        return self.snr_db is not None or self.unbalance > 0 or (self.mesh_teeth > 0 and self.mesh_amplitude > 0)
+        return (self.snr_db is not None or self.unbalance > 0 or (self.mesh_teeth > 0 and self.mesh_amplitude > 0)
+                or bool(self.modes))
 
-    def apply(self, t, acceleration, direction, shaft_hz: float, settle: float = 0.0):
+    def apply(self, t, acceleration, direction, shaft_hz: float, settle: float = 0.0, force=None):
         """The recorded ``acceleration`` (T, 3) m/s² at times ``t`` (T,) s with the masking added:
-        the machine lines along the unit ``direction`` (3,), the noise on every axis at the SNR
-        against the clean signal's RMS along ``direction`` from ``settle`` s on."""
+        the modes' response to the bearing's ``force`` on the housing (T, 3) N (needed with
+        ``modes``; :func:`mode_acceleration`), the machine lines along the unit ``direction``
+        (3,), the noise on every axis at the SNR against the RMS along ``direction`` from
+        ``settle`` s on of the signal with the modes."""
         t = np.asarray(t, dtype=float)
         out = np.array(acceleration, dtype=float, copy=True)
+        if self.modes:
+            if force is None:
+                raise ValueError("masking.modes: the housing's further modes need the bearing's force on the housing")
+            for mode in self.modes:
+                out += mode_acceleration(t, force, *mode)
         direction = np.asarray(direction, dtype=float) / np.linalg.norm(direction)
         phase = 2.0 * np.pi * shaft_hz * t
         lines = self.unbalance * np.cos(phase)
@@ -98,6 +123,26 @@ class Masking:
             sigma = rms / 10.0 ** (self.snr_db / 20.0)
             out += np.random.default_rng(self.seed).normal(0.0, sigma, out.shape)
         return out
+
+
+def mode_acceleration(t, force, frequency: float, damping_ratio: float, modal_mass: float):
+    """Acceleration (T, 3) m/s² of one housing mode driven by ``force`` (T, 3) N sampled at the
+    uniform times ``t`` (T,) s: ẍ + 2ζω ẋ + ω² x = F/m on each axis apart, H(iΩ) = −Ω² / (m (ω² − Ω²
+    + 2iζωΩ)), at rest in its static deflection under the first force. The force is band-limited
+    (it is, after the anti-aliasing filter), so the response is computed exactly in the frequency
+    domain, zero-padded until the mode's ringing has decayed by 1e-6 (no wrap-around); linear
+    interpolation between samples would take 30 % off a mode at 0.3 × the sample rate."""
+    from scipy.fft import irfft, next_fast_len, rfft, rfftfreq
+
+    t = np.asarray(t, dtype=float)
+    force = np.asarray(force, dtype=float)
+    force = force - force[0]
+    dt = float(t[1] - t[0])
+    omega = 2.0 * math.pi * frequency
+    n = next_fast_len(t.size + int(math.ceil(math.log(1e6) / (damping_ratio * omega * dt))))
+    w = 2.0 * math.pi * rfftfreq(n, dt)
+    h = -w * w / (modal_mass * (omega * omega - w * w + 2j * damping_ratio * omega * w))
+    return irfft(rfft(force, n, axis=0) * h[:, None], n, axis=0)[:t.size]
 
 
 @dataclass(frozen=True)

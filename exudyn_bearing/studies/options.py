@@ -18,7 +18,7 @@ AXIAL_HELP = ("axial force on the inner race, N, along the bearing axis (+z of t
               "way round)")
 RADIAL_HELP = "radial force on the inner race, N, along the bearing frame's x axis"
 #: single-value options whose value may start with a minus sign ("-300,300", "-300:300:5")
-_LIST_OPTIONS = ("--axial", "--radial", "--rpm")
+_LIST_OPTIONS = ("--axial", "--radial", "--rpm", "--sizes")
 _NUMBER_LIST = re.compile(r"^-[0-9.][0-9.eE+\-]*([,:][-+]?[0-9.][0-9.eE+\-]*)*$")
 
 
@@ -128,13 +128,10 @@ def _render_options(p) -> None:
     _traction_option(p)
 
 
-def _vibration_options(p) -> None:
-    """The options of ``vibration``."""
-    p.add_argument("--bearing", help="bearing TOML file with [[defect]] / [waviness] (default: the reference bearing)")
-    p.add_argument("--rpm", type=float, required=True, help="inner-race speed, rev/min (outer race on the housing)")
-    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)
-    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
-    p.add_argument("--time", type=float, default=0.5, help="simulated time, s")
+def _signal_options(p, time: float, per: str = "") -> None:
+    """The options of a vibration signal: its length, sampling, band, masking, fluctuation and
+    housing (``vibration`` and ``dataset``; ``per``: e.g. " per case")."""
+    p.add_argument("--time", type=float, default=time, help="simulated time" + per + ", s")
     p.add_argument("--settle", type=float, default=0.02, help="start left out of the spectra, s")
     p.add_argument("--sample-rate", type=float, default=20000.0, help="output sample rate, Hz (the step is at most "
                                                                         "its period; the housing is recorded through an "
@@ -149,6 +146,9 @@ def _vibration_options(p) -> None:
                    help="the shaft's unbalance line on the housing, m/s^2 (default 0)")
     p.add_argument("--mesh", type=float, nargs="+", metavar="X", help="a gear mesh on the shaft: TEETH AMPLITUDE_m/s^2 "
                                                                       "[MODULATION 0-1] (sidebands at +- the shaft)")
+    p.add_argument("--housing-mode", type=float, nargs=3, action="append", metavar=("HZ", "ZETA", "KG"),
+                   help="a further housing resonance between the seat and the sensor, driven by the bearing's force "
+                        "(frequency, damping ratio, modal mass; repeat for more; default none)")
     p.add_argument("--speed-fluctuation", type=float, default=0.0, metavar="PCT",
                    help="the shaft speed's random fluctuation, RMS %% of the rpm (default 0: steady)")
     p.add_argument("--load-fluctuation", type=float, default=0.0, metavar="PCT",
@@ -156,18 +156,50 @@ def _vibration_options(p) -> None:
     p.add_argument("--fluctuation-bandwidth", type=float, default=5.0, metavar="HZ",
                    help="the fluctuations' highest frequency, Hz (default 5)")
     p.add_argument("--seed", type=int, default=0, help="seed of the noise and the fluctuations (default 0)")
-    p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
-                                                                 "5 x the highest of BPFO, BPFI, 2 BSF)")
     p.add_argument("--housing-frequency", type=float, help="housing resonance, Hz (default: the bearing file's "
                                                            "[housing], else 3000)")
     p.add_argument("--housing-mass", type=float, help="housing mass (ring included), kg (default: the file's, else 2)")
     p.add_argument("--housing-damping", type=float, help="housing damping ratio (default: the file's, else 0.05)")
+
+
+def _vibration_options(p) -> None:
+    """The options of ``vibration``."""
+    p.add_argument("--bearing", help="bearing TOML file with [[defect]] / [waviness] (default: the reference bearing)")
+    p.add_argument("--rpm", type=float, required=True, help="inner-race speed, rev/min (outer race on the housing)")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP)
+    p.add_argument("--radial", type=float, default=0.0, help=RADIAL_HELP)
+    _signal_options(p, time=0.5)
     p.add_argument("--out", default="out/vibration", help="output directory (signal.csv, vibration.json)")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the changes of the strongest envelope line "
                         "(twice the amplitude's change bounds its error, MODEL.md §13c)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies")
+    p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
+                                                                 "5 x the highest of BPFO, BPFI, 2 BSF)")
+
+
+def _dataset_options(p) -> None:
+    """The options of ``dataset``."""
+    p.add_argument("--bearing", help="bearing TOML file, its [waviness] and [housing] kept, no [[defect]] "
+                                     "(default: the reference bearing)")
+    p.add_argument("--faults", default="none,outer,inner,ball",
+                   help="fault types, a comma list of none (a perfect bearing), outer, inner (a notch across the "
+                        "track where the radial load presses), ball (a round pit on ball 0)")
+    p.add_argument("--sizes", default="0.0005,0.001", help="fault lengths along the rolling direction (a pit's "
+                                                             "diameter), m: start:stop:count or a,b,c")
+    p.add_argument("--depth", type=float, default=0.2e-3, help="fault depth, m")
+    p.add_argument("--axial", default="1300", help="axial loads, N: start:stop:count or a,b,c (" +
+                   AXIAL_HELP.split(", N, ", 1)[1] + ")")
+    p.add_argument("--radial", default="500", help="radial loads, N: start:stop:count or a,b,c (along the bearing "
+                                                   "frame's x axis)")
+    p.add_argument("--rpm", default="1800", help="inner-race speeds, rpm: start:stop:count or a,b,c")
+    _signal_options(p, time=0.2, per=" per case")
+    p.add_argument("--out", default="out/dataset", help="output directory (one NPZ per case, index.csv, inputs.json; "
+                                                        "resumes what it finds there)")
+    p.add_argument("--workers", type=int, default=None, help="local worker processes (default: CPU count)")
+    p.add_argument("--scheduler", help="Dask scheduler address (runs the cases on that cluster)")
+    _traction_option(p)
 
 
 def _skid_map_options(p) -> None:
@@ -199,4 +231,6 @@ COMMANDS = {
     "render": ("render a run to PNG frames (headless: Xvfb/OpenGL or the raytracer)", _render_options),
     "vibration": ("housing vibration with race defects and waviness (MODEL.md §13)", _vibration_options),
     "skid-map": ("skid-risk map over load and speed (the main job)", _skid_map_options),
+    "dataset": ("labelled vibration signals over fault type, size, load and speed (MODEL.md §13b)",
+                _dataset_options),
 }

@@ -306,8 +306,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_i = rpm / 60.0
     resonance = math.sqrt(housing.support[0] / housing.mass) / (2 * math.pi)
     load = np.array([radial_force, 0.0, axial_force])
-    if masking is not None and masking.active:
-        acc = masking.apply(t, acc, load, f_i, settle)
+    if masking is not None and masking.active:  # the bearing's force on the housing drives its further modes
+        k, c = housing.support
+        acc = masking.apply(t, acc, load, f_i, settle, force=housing.mass * acc + c * vel + k * disp)
     signal = acc[keep] @ (load / np.linalg.norm(load))  # along the load (x radial, z axial)
     faults = {"kinematic": rolling_fault_frequencies(sub, bearing), "actual": actual_fault_frequencies(sub),
               "nominal": kinematic_fault_frequencies(bearing, f_i)}
