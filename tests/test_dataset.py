@@ -117,3 +117,17 @@ def test_a_bearing_with_its_own_defects_is_refused(tmp_path):
     faulty = BearingSetup(REFERENCE_BEARING, surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 1e-5),)))
     with pytest.raises(ValueError, match="bearing: .*defect"):
         ds.dataset(faulty, out=tmp_path, workers=1, progress=None)
+
+
+@pytest.mark.slow
+def test_a_dask_cluster_writes_the_same_cases(small_set, tmp_path):
+    """The set on a local Dask cluster: the same cases, labels to the solver's tolerance."""
+    distributed = pytest.importorskip("dask.distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        remote = ds.dataset(out=tmp_path, faults=("none", "outer"), sizes=(1e-3,), settings=SHORT, client=client,
+                            progress=None)
+    for a, b in zip(small_set.cases, remote.cases):
+        assert a.key == b.key and b.error is None and (tmp_path / b.file).is_file()
+        assert b.kinematic_cage_slip_percent == pytest.approx(a.kinematic_cage_slip_percent, rel=1e-3)
+        assert b.passages == a.passages

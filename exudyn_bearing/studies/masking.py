@@ -1,12 +1,14 @@
-"""What masks a bearing's signal on a machine (MODEL.md §13b; issue 50 item 3, in part): the
-recorded housing acceleration with measurement noise at a stated signal-to-noise ratio and the
-lines other machine parts put on it — the shaft's unbalance at the shaft rate, a gear mesh on
-the shaft with its sidebands. Off by default: a clean study sees the bearing alone.
+"""What masks a bearing's signal on a machine (MODEL.md §13b; issue 50 item 3): the recorded
+housing acceleration with the housing's further resonances (driven by the bearing's force on
+the housing), measurement noise at a stated signal-to-noise ratio and the lines other machine
+parts put on it — the shaft's unbalance at the shaft rate, a gear mesh on the shaft with its
+sidebands. Off by default: a clean study sees the bearing alone.
 
-These are added to the recorded signal, as a measurement would carry them; they are not forces
-on the model (an unbalance's rotating force, which would also move the bearing's loads, is not
-built). Random slip is the model's own: :class:`Fluctuation` makes the shaft speed and the load
-vary as slow random processes, so the cage's slip and the passages' spacing vary with them.
+The lines and the noise are added to the recorded signal, as a measurement would carry them;
+they are not forces on the model (an unbalance's rotating force, which would also move the
+bearing's loads, is not built). Random slip is the model's own: :class:`Fluctuation` makes the
+shaft speed and the load vary as slow random processes, so the cage's slip and the passages'
+spacing vary with them.
 """
 from __future__ import annotations
 
