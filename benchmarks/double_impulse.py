@@ -20,18 +20,12 @@ import numpy as np
 from contact.defect_passage import UNLOAD_SHARE, passage_marks
 
 
-#: the band in which the entry's unloading shows, Hz (studied on 1–3-mm spalls, MODEL.md §13b)
+#: the band in which the entry's unloading shows, Hz (studied on 1–3-mm spalls, docs/DEVELOPMENT.md)
 LOW_BAND_HZ = (200.0, 2000.0)
 #: the strikes' band as shares of the sample rate: up to just below the anti-aliasing corner
 HIGH_BAND_SHARE = (0.16, 0.38)
 #: the share of the averaged low-band envelope's largest value the entry's peak must reach
 ENTRY_SHARE = 0.5
-
-
-class DoubleImpulse(dict):
-    """:func:`double_impulse`'s answer: ``spacing_s`` (entry to strike, s), ``strikes`` (their
-    count), ``profile_t_s`` and ``profile`` (the averaged low-band squared envelope, time
-    from the strike)."""
 
 
 def _band_envelope(x, sample_rate, band):
@@ -43,11 +37,13 @@ def _band_envelope(x, sample_rate, band):
 
 
 def double_impulse(signal, sample_rate: float, fault_hz: float, low_band=LOW_BAND_HZ,
-                   high_band=None) -> DoubleImpulse:
+                   high_band=None) -> dict:
     """The spacing of a defect's double impulse in ``signal`` (sampled at ``sample_rate`` Hz)
     with passages at ``fault_hz`` (e.g. BPFO read from the envelope spectrum); ``low_band`` Hz
     for the entry, ``high_band`` Hz for the strikes (default :data:`HIGH_BAND_SHARE` of the
-    sample rate). Raises ValueError where the signal holds fewer than four passages."""
+    sample rate): {"spacing_s": entry to strike, s (None: no entry found), "strikes": the passages
+    averaged, "profile_t_s", "profile": the averaged low-band squared envelope, time from the
+    strike}. Raises ValueError where the signal holds fewer than four passages."""
     from scipy.signal import find_peaks
 
     x = np.asarray(signal, dtype=float)
@@ -72,7 +68,7 @@ def double_impulse(signal, sample_rate: float, fault_hz: float, low_band=LOW_BAN
     lag = (np.arange(profile.size) - before) / sample_rate
     peaks, _ = find_peaks(profile)
     early = [p for p in peaks if lag[p] < -1e-4 and profile[p] >= ENTRY_SHARE * profile.max()]
-    return DoubleImpulse(spacing_s=float(-lag[early[0]]) if early else None, strikes=len(rows),
+    return dict(spacing_s=float(-lag[early[0]]) if early else None, strikes=len(rows),
                          profile_t_s=lag, profile=profile)
 
 

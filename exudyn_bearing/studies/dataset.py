@@ -28,7 +28,7 @@ from ..bearingfile import as_setup
 from ..presets import REFERENCE_BEARING
 from ..results.records import setup_inputs
 from ..setup import BearingSetup
-from .grid import check_picklable, guard_folder, read_journal, run_cases
+from .grid import check_picklable, grid_values, guard_folder, read_journal, run_cases
 from .masking import Fluctuation, Masking
 from .vibration import FAULTS
 
@@ -36,6 +36,8 @@ __all__ = ["FAULT_NAMES", "CaseSettings", "DatasetCase", "Dataset", "dataset", "
 
 #: the fault types of a data set: a perfect bearing, a defect on a race, a pit on a ball
 FAULT_NAMES = ("none", "outer", "inner", "ball")
+#: the index's names of the case's fields whose unit the name alone does not say
+INDEX_UNITS = {"size": "size_m", "axial": "axial_N", "radial": "radial_N"}
 #: the index's columns after the case's own (:class:`DatasetCase`): the actual fault frequencies
 INDEX_FREQUENCIES = tuple(f"{name}_Hz" for name in FAULTS)
 
@@ -73,7 +75,7 @@ class CaseSettings:
     fluctuation: Fluctuation | None = None
 
     def __post_init__(self) -> None:
-        from .vibration import check_band
+        from .vibration import check_band_choice
 
         for name in ("time", "sample_rate", "depth"):
             value = getattr(self, name)
@@ -81,11 +83,7 @@ class CaseSettings:
                 raise ValueError(f"settings.{name} must be a positive number, got {value!r}")
         if not (isinstance(self.settle, (int, float)) and 0 <= self.settle < self.time):
             raise ValueError(f"settings.settle must lie in [0, time = {self.time:g} s), got {self.settle!r}")
-        if isinstance(self.band, str):
-            if self.band != "auto":
-                raise ValueError(f"settings.band must be 'auto', None or (low, high) Hz, got {self.band!r}")
-        elif self.band is not None:
-            object.__setattr__(self, "band", check_band(self.band, self.sample_rate))
+        object.__setattr__(self, "band", check_band_choice(self.band, self.sample_rate))
         if self.masking is not None and not isinstance(self.masking, Masking):
             raise ValueError(f"settings.masking must be a Masking(...) or None, got {self.masking!r}")
         if self.fluctuation is not None and not isinstance(self.fluctuation, Fluctuation):
@@ -218,13 +216,11 @@ class Dataset:
         path = self.folder / "index.csv"
         with open(path, "w", newline="") as fh:
             writer = csv.writer(fh)
-            writer.writerow([n if n not in ("size", "axial", "radial") else
-                             {"size": "size_m", "axial": "axial_N", "radial": "radial_N"}[n] for n in names]
-                            + list(INDEX_FREQUENCIES) + ["envelope_line_Hz", "envelope_line_m_s2"])
+            writer.writerow([INDEX_UNITS.get(n, n) for n in names] + list(INDEX_FREQUENCIES)
+                            + ["envelope_line_Hz", "envelope_line_m_s2"])
             for c in self.cases:
                 freqs = [(c.fault_frequencies or {}).get(k) for k in FAULTS]
-                line = c.envelope_line or [None, None]
-                writer.writerow([getattr(c, n) for n in names] + freqs + line)
+                writer.writerow([getattr(c, n) for n in names] + freqs + (c.envelope_line or [None, None]))
         return path
 
 
@@ -251,16 +247,9 @@ def dataset(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, *, out, f
     if not isinstance(settings, CaseSettings):
         raise ValueError(f"settings must be a CaseSettings(...), got {settings!r}")
     templates = _templates(faults)
-    values = {}
-    for name, given, low in (("sizes", sizes, 0.0), ("axial_force", axial_force, 0.0),
-                             ("radial_force", radial_force, 0.0), ("rpm", rpm, 0.0)):
-        given = [given] if isinstance(given, (int, float)) else list(given)
-        bad = [v for v in given if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v)
-               or v < low or (name in ("sizes", "rpm") and v == 0)]
-        if bad or not given:
-            raise ValueError(f"{name}: every value must be a finite number {'> 0' if name in ('sizes', 'rpm') else '>= 0'}"
-                             f", got {bad[0] if bad else 'none'!r}")
-        values[name] = [float(v) for v in given]
+    values = {name: grid_values(name, [given] if isinstance(given, (int, float)) else given, strict=strict)
+              for name, given, strict in (("sizes", sizes, True), ("axial_force", axial_force, False),
+                                          ("radial_force", radial_force, False), ("rpm", rpm, True))}
     if any(a == 0 and r == 0 for a in values["axial_force"] for r in values["radial_force"]):
         raise ValueError("axial_force, radial_force: a case with neither load has no load distribution")
     grid = []
@@ -280,7 +269,7 @@ def dataset(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, *, out, f
     result = Dataset(folder, [done[c.key] for c in grid if c.key in done], record)
     todo = [c for c in grid if c.key not in done]
     registered = applied_terms(setup.contact_law)
-    check_picklable(registered, client is not None or (workers or os.cpu_count() or 1) > 1)
+    check_picklable(registered, workers, client)
     jobs = [(c, templates[c.fault], setup, settings if c.seed is None else settings.seeded(c.seed - seeded.seed),
              str(folder), registered) for c in todo]
     if progress and done:

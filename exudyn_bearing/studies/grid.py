@@ -6,13 +6,27 @@ inputs is refused), and the cases run in local processes or on a Dask cluster.
 from __future__ import annotations
 
 import json
+import math
 import multiprocessing
 import os
 import pickle
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
-__all__ = ["guard_folder", "read_journal", "check_picklable", "run_cases"]
+__all__ = ["grid_values", "guard_folder", "read_journal", "check_picklable", "run_cases"]
+
+
+def grid_values(name: str, values, low: float | None = 0.0, strict: bool = False, hint: str = "") -> list:
+    """The sequence ``values`` as floats, refused by ``name`` unless each is finite and >= ``low``
+    (> with ``strict``; ``low`` None: any finite number) and there is one at least; ``hint`` is
+    added to the message."""
+    values = list(values)
+    bad = [v for v in values if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v)
+           or (low is not None and (v <= low if strict else v < low))]
+    if bad or not values:
+        bound = "" if low is None else f" and {'>' if strict else '>='} {low:g}"
+        raise ValueError(f"{name}: every value must be finite{bound}, got {bad[0] if bad else 'none'!r}{hint}")
+    return [float(v) for v in values]
 
 
 def guard_folder(folder: Path, record: dict, what: str, journal: str) -> None:
@@ -55,10 +69,10 @@ def read_journal(path: Path, make) -> dict:
     return done
 
 
-def check_picklable(registered, parallel: bool) -> None:
+def check_picklable(registered, workers: int | None, client) -> None:
     """Refuse registered contact terms (``contact.terms.register_term``) that worker processes
-    cannot receive."""
-    if registered and parallel:
+    (a Dask ``client``, or more than one of ``workers``, default the CPU count) cannot receive."""
+    if registered and (client is not None or (workers or os.cpu_count() or 1) > 1):
         try:
             pickle.dumps(registered)
         except Exception as err:  # noqa: BLE001 - any pickling failure

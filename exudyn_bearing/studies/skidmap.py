@@ -11,7 +11,6 @@ import csv
 import itertools
 import json
 import math
-import os
 import time as _time
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
@@ -30,7 +29,7 @@ from ..renamed import accepts_old_names
 from ..results.records import setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup
 from ..solvers.steady import steady_state
-from .grid import check_picklable, guard_folder, read_journal, run_cases
+from .grid import check_picklable, grid_values, guard_folder, read_journal, run_cases
 from .skidmap_report import plot_skid_map, skid_map_markdown
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
@@ -313,20 +312,14 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
         The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage)
-    checks = (("axial_force", axial_force, 0.0), ("radial_force", radial_force, 0.0), ("rpm", rpm, None))
-    for name, values, low in checks:
-        bad = [v for v in values if not (isinstance(v, (int, float)) and math.isfinite(v))
-               or (low is not None and v < low)]
-        if bad:
-            raise ValueError(f"{name}: every value must be finite{' and >= 0' if low is not None else ''}, got {bad[0]!r}"
-                             + (" (the axial load acts along the bearing axis; for a load the other way mount "
-                                "the bearing the other way round)" if name == "axial_force" else ""))
+    hint = (" (the axial load acts along the bearing axis; for a load the other way mount the bearing the other "
+            "way round)")
+    axial_force = grid_values("axial_force", axial_force, hint=hint)
+    radial_force, rpm = grid_values("radial_force", radial_force), grid_values("rpm", rpm, low=None)
     if time is not None and not (isinstance(time, (int, float)) and math.isfinite(time) and time > 0):
         raise ValueError(f"time must be a positive number of seconds (or None: until settled), got {time!r}")
     grid = [SkidPoint(float(a), float(r), float(n), None if time is None else float(time))
             for n, r, a in itertools.product(rpm, radial_force, axial_force)]
-    if not grid:
-        raise ValueError("axial_force, radial_force, rpm: the grid is empty")
     if any(p.axial == 0 and p.radial == 0 for p in grid):
         raise ValueError("axial_force, radial_force: a point with neither load has no load distribution")
     journal = Path(out) / "points.jsonl" if out is not None else None
@@ -344,7 +337,7 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     # the terms registered in this process (contact.terms.register_term) go with every point:
     # a worker process registers them again
     registered = applied_terms(setup.contact_law)
-    check_picklable(registered, client is not None or (workers or os.cpu_count() or 1) > 1)
+    check_picklable(registered, workers, client)
     jobs = [(p, setup, registered) for p in todo]
 
     def record(data):

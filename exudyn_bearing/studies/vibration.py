@@ -19,7 +19,7 @@ from ..setup import FROM_SETUP
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
-           "sampled_signal", "check_band", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
+           "sampled_signal", "check_band", "check_band_choice", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
            "vibration"]
 
 #: the fault frequencies, in the order printed
@@ -134,6 +134,16 @@ def check_band(band, sample_rate: float) -> tuple:
     if not 0 < low < high < nyquist:
         raise ValueError(f"band: ({low}, {high}) Hz must lie inside (0, {nyquist:g}) Hz, the Nyquist frequency")
     return low, high
+
+
+def check_band_choice(band, sample_rate: float):
+    """:func:`vibration`'s ``band``: "auto", None, or (low, high) Hz (:func:`check_band`, returned as
+    floats); anything else refused by name."""
+    if isinstance(band, str):
+        if band != "auto":
+            raise ValueError(f"band must be 'auto', None or (low, high) Hz, got {band!r}")
+        return band
+    return None if band is None else check_band(band, sample_rate)
 
 
 def envelope_spectrum(signal, sample_rate: float, band: tuple):
@@ -365,11 +375,7 @@ def _check_inputs(rpm, axial_force, radial_force, time, sample_rate, housing, se
         raise ValueError(f"fluctuation must be a studies.masking.Fluctuation(...) or None, got {fluctuation!r}")
     if not (math.isfinite(time) and time > settle >= 0):
         raise ValueError(f"time must exceed the settling time {settle} s, got {time!r}")
-    if isinstance(band, str):
-        if band != "auto":
-            raise ValueError(f"band must be 'auto', None or (low, high) Hz, got {band!r}")
-    elif band is not None:
-        check_band(band, sample_rate)
+    check_band_choice(band, sample_rate)
 
 
 def _passage_events(handle, mbs, results, surface) -> list:
