@@ -313,3 +313,31 @@ def test_compilation_is_announced_once_when_no_cache_exists(monkeypatch, tmp_pat
     glue._announce_compilation()
     err = capsys.readouterr().err
     assert err.count("compiling the contact kernels") == 1
+
+
+@pytest.mark.parametrize("name", ["axial, rigid cage, drag", "combined load",
+                                  "rolling resistance, thermal film, combined load", "race surfaces, combined load"])
+def test_outputs_recomputed_by_the_compiled_rule_match_the_numpy_rule(name):
+    """A run on the compiled path has its outputs' traction recomputed by the compiled rule
+    (:meth:`BearingConnector.states`): the same rule's float32 nodes, within 1e-5 of each
+    field's largest value of the numpy rule on the same states (as the run's forces,
+    test_connector_compiled_paths_match_numpy_path); loads, films and pressures the same numbers."""
+    kw = dict(SCENES[name])
+    _sc, con, q, qt = _scene(kw.pop("law", ContactLaw()), **kw)
+    t = np.full(3, 0.01)
+    qs, qts = q + np.outer([0.0, 1e-7, -1e-7], np.ones_like(q)), np.repeat(qt[None], 3, axis=0)
+    got = con.states(t, qs, qts)
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = con.states(t, qs, qts)
+    finally:
+        con._compiled = kernel
+    for race in ("inner_forces", "outer_forces"):
+        g, r = getattr(got, race), getattr(ref, race)
+        assert np.count_nonzero(r.normal_load) > 3
+        for field in ("normal_load", "film_thickness", "max_pressure"):
+            np.testing.assert_array_equal(getattr(g, field), getattr(r, field))
+        for field in ("traction_rolling", "traction_transverse", "spin_moment", "heat"):
+            err = np.max(np.abs(getattr(g, field) - getattr(r, field)))
+            assert err < 1e-5 * np.max(np.abs(getattr(r, field))), (race, field, err)
+        assert not np.array_equal(g.traction_rolling, r.traction_rolling)  # two rules ran, not one twice
