@@ -118,8 +118,8 @@ class Geometric:
             offsets = self.initial_offsets(x)
         offsets = offsets.copy()
         max_step = 0.25 * min(self.ti, self.to)
+        res, con = self.ball_residual(offsets, x)
         for it in range(max_iter):
-            res, con = self.ball_residual(offsets, x)
             scale = np.maximum(np.maximum(con["inner"]["load"], con["outer"]["load"]), self.fc) + 1e-300
             norm = np.linalg.norm(res, axis=1)
             # all balls share the rounding floor of the heaviest one: positions ~0.1 m round
@@ -139,6 +139,7 @@ class Geometric:
                 return offsets, con, it
             if np.any(singular & active):
                 offsets[singular & active] = self.initial_offsets(x)[singular & active] + np.array([1e-9, 0.0])
+                res, con = self.ball_residual(offsets, x)
                 continue
             step = -np.linalg.solve(jac[active], res[active][:, :, None])[:, :, 0]
             length = np.linalg.norm(step, axis=1)
@@ -148,13 +149,12 @@ class Geometric:
             trial = offsets.copy()
             for _ in range(30):
                 trial[active] = offsets[active] + lam[:, None] * step
-                new_norm = np.linalg.norm(self.ball_residual(trial, x)[0][active], axis=1)
-                worse = new_norm > norm[active] * (1 - 1e-4 * lam)
+                res, con = self.ball_residual(trial, x)  # the accepted trial's: the next iteration's
+                worse = np.linalg.norm(res[active], axis=1) > norm[active] * (1 - 1e-4 * lam)
                 if not np.any(worse):
                     break
                 lam = np.where(worse, 0.5 * lam, lam)
             offsets = trial
-        res, con = self.ball_residual(offsets, x)
         raise QuasiStaticError(
             f"ball force balance did not converge in {max_iter} Newton iterations "
             f"(largest residual {np.abs(res).max():.3g} N at ball {int(np.abs(res).max(axis=1).argmax())})")
@@ -242,7 +242,7 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
     length = bearing.pitch_radius  # moments scaled to forces
     steps = np.array([1e-9, 1e-9, 1e-9, 1e-9 / length, 1e-9 / length])
     scale = max(axial_force, radial_force, 1.0, *(abs(m) / length for m in (moment or ())))
-    state = {"offsets": None}
+    state = {"offsets": None, "trial": None}
 
     def race_residual(xx, keep=False):
         offsets, con, _ = model.solve_balls(xx, state["offsets"])
@@ -255,7 +255,12 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
     history = [0.0]
     it = 0
     for it in range(max_iter):
-        res, offsets, con = race_residual(x, keep=True)
+        trial = state["trial"]
+        if trial is not None and np.array_equal(trial[0], x):  # the line search's last trial, from the same start
+            res, offsets, con = trial[1]
+            state["offsets"] = offsets
+        else:
+            res, offsets, con = race_residual(x, keep=True)
         history.append(float(np.linalg.norm(res)))
         if history[-1] < tol * scale:
             break
@@ -270,10 +275,11 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
             trial = x.copy()
             trial[free] += lam * step
             try:
-                if np.linalg.norm(race_residual(trial)[0]) < history[-1] * (1 - 1e-4 * lam):
+                state["trial"] = (trial, race_residual(trial))
+                if np.linalg.norm(state["trial"][1][0]) < history[-1] * (1 - 1e-4 * lam):
                     break
             except QuasiStaticError:
-                pass
+                state["trial"] = None
             lam *= 0.5
         x = trial
     else:
