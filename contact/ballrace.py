@@ -223,9 +223,9 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     Hamrock–Dowson central film (at least ``min_film_thickness``). ``terms``: the per-contact
     terms (:func:`contact.terms.term_record` of ``law`` and ``lubricant``, built once by the
     caller's :func:`exudyn_bearing.contact_records.contact_records`; built here if None).
-    ``compiled``: the traction by the law's compiled form where it has one
-    (:attr:`contact.traction_laws.TractionModel.compiled`; the same rule, far cheaper for many
-    contacts), else by its numpy form.
+    ``compiled``: a Crook law's traction by the compiled fast rule
+    (:func:`contact.kernels.crook.crook_law`; the same rule, ~20x cheaper for many contacts)
+    where the law uses the fast rule, else by its numpy form.
     """
     n_con = kin.penetration.shape[0]
     r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
@@ -280,7 +280,11 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
             if lubricant.pressure_viscosity > 0:
                 p_traction = np.minimum(p_traction, law.max_barus_exponent / lubricant.pressure_viscosity)
         # spin still shapes the local slip field when its moment is switched off
-        evaluate = model.compiled if compiled and model.compiled is not None else model.evaluate
+        evaluate = model.evaluate
+        if compiled and model.crook and model.kernel == 1 and law.fast_quadrature:
+            from .kernels.crook import crook_law  # the same fast rule, compiled
+
+            evaluate = crook_law
         tr = evaluate((kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx]), a, b, p_traction,
                             load[idx], h[idx], kin.entrainment[idx], lubricant, law)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat

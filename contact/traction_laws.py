@@ -43,10 +43,6 @@ class TractionModel:
     kernel : int or None
         ``LawRecord.traction`` of the compiled kernels (:mod:`contact.kernels`) that compute
         it (with ``ContactLaw.fast_quadrature`` for Crook laws); None: numpy path only.
-    compiled : callable or None
-        The same law for the n loaded contacts by the compiled kernels, arguments and result
-        as ``evaluate``: the outputs of a run recomputed by the code that ran it
-        (:func:`contact.ballrace.ball_race_forces` with ``compiled=True``). None: ``evaluate``.
     """
 
     name: str
@@ -55,7 +51,6 @@ class TractionModel:
     film: bool = False
     crook: bool = False
     kernel: int | None = None
-    compiled: Callable | None = None
 
 
 #: the registered laws by name, in the order help texts list them
@@ -88,21 +83,6 @@ def _crook(slip, a, b, p_max, load, h, entrainment, lubricant, law):
                           film_modulus=law.film_modulus_for(lubricant), entrainment=entrainment)
 
 
-def _crook_compiled(slip, a, b, p_max, load, h, entrainment, lubricant, law):
-    """:func:`_crook` by the compiled fast rule (:func:`contact.kernels.crook.crook_fast`, the
-    kernel the dynamic model's forces run on; within 3e-4 of the numpy fast rule); the accurate
-    rule (``fast_quadrature=False``) stays on the numpy path."""
-    if not law.fast_quadrature:
-        return _crook(slip, a, b, p_max, load, h, entrainment, lubricant, law)
-    from .kernels.crook import crook_fast
-    from .traction_law import Traction
-
-    fx, fy, mz, heat = crook_fast(*slip, a, b, p_max, h, lubricant, order=law.quadrature_order,
-                                  limiting_shear=law.limiting_shear_for(lubricant),
-                                  film_modulus=law.film_modulus_for(lubricant), entrainment=entrainment)
-    return Traction(fx, fy, mz, heat)
-
-
 def _newtonian(slip, a, b, p_max, load, h, entrainment, lubricant, law):
     from .newtonian import newtonian_traction
 
@@ -117,9 +97,9 @@ def _coulomb(slip, a, b, p_max, load, h, entrainment, lubricant, law):
 
 register_traction(TractionModel(
     "crook-limited", "Crook thermal EHD traction with the lubricant's limiting shear stress and the film's "
-    "elastic compliance (MODEL.md §6, §6a, §6b; the default)", _crook, film=True, crook=True, kernel=1, compiled=_crook_compiled))
+    "elastic compliance (MODEL.md §6, §6a, §6b; the default)", _crook, film=True, crook=True, kernel=1))
 register_traction(TractionModel("crook", "the paper's pure Crook thermal EHD law (MODEL.md §6)", _crook, film=True,
-                                crook=True, kernel=1, compiled=_crook_compiled))
+                                crook=True, kernel=1))
 register_traction(TractionModel("newtonian", "the isothermal Newtonian limit of the Crook law, small slip only "
                                 "(MODEL.md §6)", _newtonian, film=True))
 register_traction(TractionModel("coulomb", "regularized dry Coulomb friction, mu and u_r of the contact law",
