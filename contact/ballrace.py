@@ -286,7 +286,7 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
 
             evaluate = crook_law
         tr = evaluate((kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx]), a, b, p_traction,
-                            load[idx], h[idx], kin.entrainment[idx], lubricant, law)
+                      load[idx], h[idx], kin.entrainment[idx], lubricant, law)
         fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
         if law.spin_moment:
             mz[idx] = tr.mz

@@ -242,7 +242,7 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
     length = bearing.pitch_radius  # moments scaled to forces
     steps = np.array([1e-9, 1e-9, 1e-9, 1e-9 / length, 1e-9 / length])
     scale = max(axial_force, radial_force, 1.0, *(abs(m) / length for m in (moment or ())))
-    state = {"offsets": None, "trial": None}
+    state = {"offsets": None, "last": None}  # the balls' warm start; the line search's last (pose, residual)
 
     def race_residual(xx, keep=False):
         offsets, con, _ = model.solve_balls(xx, state["offsets"])
@@ -255,9 +255,9 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
     history = [0.0]
     it = 0
     for it in range(max_iter):
-        trial = state["trial"]
-        if trial is not None and np.array_equal(trial[0], x):  # the line search's last trial, from the same start
-            res, offsets, con = trial[1]
+        last = state["last"]
+        if last is not None and np.array_equal(last[0], x):  # the accepted trial, solved from the same warm start
+            res, offsets, con = last[1]
             state["offsets"] = offsets
         else:
             res, offsets, con = race_residual(x, keep=True)
@@ -275,11 +275,11 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
             trial = x.copy()
             trial[free] += lam * step
             try:
-                state["trial"] = (trial, race_residual(trial))
-                if np.linalg.norm(state["trial"][1][0]) < history[-1] * (1 - 1e-4 * lam):
+                state["last"] = (trial, race_residual(trial))
+                if np.linalg.norm(state["last"][1][0]) < history[-1] * (1 - 1e-4 * lam):
                     break
             except QuasiStaticError:
-                state["trial"] = None
+                state["last"] = None
             lam *= 0.5
         x = trial
     else:
