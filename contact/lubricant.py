@@ -1,8 +1,9 @@
-"""Lubricant properties and the Barus viscosity law (MODEL.md §5, paper P11)."""
+"""Lubricant properties, the Barus viscosity law (MODEL.md §5, paper P11) and the oil at
+another temperature (Walther's relation, MODEL.md §14b)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -51,6 +52,11 @@ class Lubricant:
         a paraffinic cylinder stock, Hertz pressures to 2 GPa: a limit, not a fit); of the
         size Johnson & Roberts (1974, Proc. R. Soc. Lond. A 337, 217) measured for a mineral
         oil at 23 degC, G = 0.1-1 GPa over 1-2 GPa (G/p 0.1-0.5).
+    kinematic_viscosity_40, kinematic_viscosity_100 : float
+        The oil's kinematic viscosities at 40 and 100 degC, m^2/s (the grades' data-sheet
+        values), which fix Walther's relation (ASTM D341) for :meth:`at_temperature`; 0 (the
+        default): not given, the exponential law of ``temperature_viscosity`` instead. Used
+        only where the oil's temperature changes (the thermal network, MODEL.md §14).
     """
 
     viscosity: float
@@ -61,6 +67,8 @@ class Lubricant:
     density: float
     limiting_shear_coefficient: float = 0.047
     film_shear_modulus_coefficient: float = 0.2953
+    kinematic_viscosity_40: float = 0.0
+    kinematic_viscosity_100: float = 0.0
 
     def __post_init__(self) -> None:
         _check_positive("viscosity", self.viscosity)
@@ -72,6 +80,14 @@ class Lubricant:
         _check_positive("density", self.density, allow_zero=True)
         _check_positive("limiting_shear_coefficient", self.limiting_shear_coefficient, allow_zero=True)
         _check_positive("film_shear_modulus_coefficient", self.film_shear_modulus_coefficient)
+        _check_positive("kinematic_viscosity_40", self.kinematic_viscosity_40, allow_zero=True)
+        _check_positive("kinematic_viscosity_100", self.kinematic_viscosity_100, allow_zero=True)
+        if (self.kinematic_viscosity_40 > 0) != (self.kinematic_viscosity_100 > 0):
+            raise ValueError("kinematic_viscosity_40, kinematic_viscosity_100: give both (Walther's relation) or "
+                             "neither")
+        if 0 < self.kinematic_viscosity_40 <= self.kinematic_viscosity_100:
+            raise ValueError("kinematic_viscosity_40 must exceed kinematic_viscosity_100 (oil thins as it warms), "
+                             f"got {self.kinematic_viscosity_40!r} <= {self.kinematic_viscosity_100!r}")
 
     @property
     def shear_heating(self) -> float:
@@ -93,6 +109,42 @@ class Lubricant:
         if temperature is not None:
             exponent = exponent - self.temperature_viscosity * (np.asarray(temperature, dtype=float) - self.reference_temperature)
         return self.viscosity * np.exp(exponent)
+
+    def at_temperature(self, temperature: float) -> "Lubricant":
+        """The oil at ``temperature`` (degC) and ambient pressure: its viscosity there, that
+        temperature as the reference and the local c_etaT = -d ln(eta)/dT (MODEL.md §14b).
+
+        With both kinematic viscosities given, Walther's relation (ASTM D341),
+        log10 log10(nu + 0.7) = A - B log10(T), nu in cSt and T in K, through the two points,
+        at constant density; else eta_0 exp(-c_etaT (T - T_R)) with c_etaT unchanged.
+        """
+        if not isinstance(temperature, (int, float, np.floating)) or not math.isfinite(temperature):
+            raise ValueError(f"temperature must be a finite number (degC), got {temperature!r}")
+        if temperature <= -273.15:
+            raise ValueError(f"temperature must lie above absolute zero, got {temperature!r} degC")
+        if self.kinematic_viscosity_40 <= 0:
+            eta = float(self.viscosity_at(0.0, temperature))
+            return replace(self, viscosity=eta, reference_temperature=float(temperature))
+        nu, slope = walther(self.kinematic_viscosity_40, self.kinematic_viscosity_100, float(temperature))
+        return replace(self, viscosity=self.density * nu, reference_temperature=float(temperature),
+                       temperature_viscosity=slope)
+
+
+def walther(nu_40: float, nu_100: float, temperature: float) -> tuple:
+    """(nu m^2/s, -d ln(nu)/dT 1/K) at ``temperature`` (degC) by Walther's relation (ASTM D341)
+    through the kinematic viscosities ``nu_40`` and ``nu_100`` (m^2/s) at 40 and 100 degC:
+    log10 log10(nu + 0.7) = A - B log10(T), nu in cSt, T in K (MODEL.md §14b)."""
+    def y(nu):
+        return math.log10(math.log10(nu * 1e6 + 0.7))
+
+    x40, x100, x = (math.log10(t + 273.15) for t in (40.0, 100.0, temperature))
+    b = (y(nu_40) - y(nu_100)) / (x100 - x40)
+    z = 10.0 ** (10.0 ** (y(nu_40) - b * (x - x40)))  # nu + 0.7, cSt
+    nu_cst = z - 0.7
+    if nu_cst <= 0:
+        raise ValueError(f"temperature {temperature!r} degC lies beyond Walther's relation of this oil (nu <= 0)")
+    # d/dT of log10 log10 z = -B/(T ln 10)  =>  dz/dT = -B ln(10) z log10(z) / T
+    return nu_cst * 1e-6, b * math.log(10.0) * z * math.log10(z) / (nu_cst * (temperature + 273.15))
 
 
 #: Reference oil of Jain & Hunt (2011), table 1b, with the two values the OCR lost

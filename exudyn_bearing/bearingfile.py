@@ -60,6 +60,12 @@ Example::
     mass = 2.0                       # kg, ring included
     damping_ratio = 0.05             # of critical
 
+    [thermal]                        # optional: the thermal network (MODEL.md §14), steady only
+    oil_flow = 1.27e-5               # m^3/s through the bearing
+    oil_inlet_temperature = 394.0    # K; absent: the lubricant's reference temperature
+    ambient_temperature = 293.15     # K
+    bore = 35e-3                     # m; absent: estimated (outside_diameter, width likewise)
+
 A file reads into a :class:`~exudyn_bearing.setup.BearingSetup`. A function that takes a
 ``bearing`` takes it too, or its path, and then every part the file gives unless that part
 is passed explicitly (:func:`as_setup`); a part a function cannot use is refused by name.
@@ -77,6 +83,7 @@ except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
 from contact.ballrace import ContactLaw
+from contact.bearing_thermal import ThermalModel
 from contact.lubricant import Lubricant
 from .bearing import BallDrag, Bearing, Material
 from .cage import CageModel
@@ -114,7 +121,7 @@ def as_setup(bearing, **given) -> BearingSetup:
 
 
 _SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law",
-             "defect", "waviness", "housing"}
+             "defect", "waviness", "housing", "thermal"}
 #: [cage] keys whose values are words, not numbers
 _CAGE_WORDS = {"kind", "guidance"}
 #: [contact_law] keys whose values are words, and those that are true or false: from the
@@ -218,7 +225,13 @@ def loads_bearing(text: str) -> BearingSetup:
             housing = _dataclass_from(HousingModel, data, "housing")
         except ValueError as err:
             raise ValueError(f"[housing] {err}") from None
-    return BearingSetup(bearing, lubricant, drag, cage, law, _surface(data), housing)
+    thermal = None
+    if "thermal" in data:
+        try:
+            thermal = _dataclass_from(ThermalModel, data, "thermal")
+        except ValueError as err:
+            raise ValueError(f"[thermal] {err}") from None
+    return BearingSetup(bearing, lubricant, drag, cage, law, _surface(data), housing, thermal)
 
 
 def _surface(data: dict) -> SurfaceModel:
@@ -334,6 +347,8 @@ def dumps_bearing(setup: BearingSetup | Bearing) -> str:
         text += "\n" + _section("contact_law", setup.contact_law) + "\n"
     if setup.housing is not None:
         text += "\n" + _section("housing", setup.housing) + "\n"
+    if setup.thermal is not None:
+        text += "\n" + _section("thermal", setup.thermal) + "\n"
     return text + _surface_text(setup.surface)
 
 

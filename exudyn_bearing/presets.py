@@ -59,7 +59,8 @@ SPINDLE_40MM_BEARING = Bearing(balls=14, ball_diameter=8.731e-3, pitch_diameter=
 # usually give a lower tau_L / p, so the traction cap is rather an upper estimate (MODEL.md §6a).
 ESTER_TURBINE_OIL = Lubricant(viscosity=3.2e-3, reference_temperature=121.0, pressure_viscosity=1.5e-8,
                               temperature_viscosity=0.016, thermal_conductivity=0.15, density=919.0,
-                              limiting_shear_coefficient=0.047, film_shear_modulus_coefficient=0.2953)
+                              limiting_shear_coefficient=0.047, film_shear_modulus_coefficient=0.2953,
+                              kinematic_viscosity_40=27.6e-6, kinematic_viscosity_100=5.1e-6)
 
 #: Jet- or mist-lubricated high-speed bearing: 0.5 % oil in the oil-air mixture (issue 19).
 HIGH_SPEED_DRAG = BallDrag(drag_coefficient=0.5, oil_volume_fraction=0.005)

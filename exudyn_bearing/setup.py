@@ -22,6 +22,7 @@ from dataclasses import dataclass, fields
 from dataclasses import replace as _replace
 
 from contact.ballrace import ContactLaw
+from contact.bearing_thermal import ThermalModel
 from contact.lubricant import Lubricant
 from contact.surface import SurfaceModel
 from .bearing import BallDrag, Bearing
@@ -29,7 +30,7 @@ from .cage import CageModel
 from .presets import REFERENCE_DRAG, REFERENCE_LUBRICANT
 from .races import HousingModel
 
-__all__ = ["BearingSetup", "FROM_SETUP", "refuse_surface"]
+__all__ = ["BearingSetup", "FROM_SETUP", "refuse_surface", "refuse_thermal"]
 
 
 class _FromSetup:
@@ -77,6 +78,11 @@ class BearingSetup:
     housing : HousingModel or None
         The outer race on a housing of mass, stiffness and damping (MODEL.md §13a); None:
         a fixed outer race.
+    thermal : contact.bearing_thermal.ThermalModel or None
+        The thermal network's inputs (MODEL.md §14): oil flow and inlet temperature, ambient,
+        ring, housing and shaft sizes; None: every contact at the lubricant's viscosity.
+        Used by :func:`~exudyn_bearing.steady_state`; refused by the commands that do not
+        model temperatures yet (:func:`refuse_thermal`).
     """
 
     bearing: Bearing
@@ -86,11 +92,12 @@ class BearingSetup:
     contact_law: ContactLaw = ContactLaw()
     surface: SurfaceModel = SurfaceModel()
     housing: HousingModel | None = None
+    thermal: ThermalModel | None = None
 
     def __post_init__(self) -> None:
         kinds = {"bearing": (Bearing,), "lubricant": (Lubricant,), "drag": (BallDrag, type(None)),
                  "cage": (CageModel,), "contact_law": (ContactLaw,), "surface": (SurfaceModel,),
-                 "housing": (HousingModel, type(None))}
+                 "housing": (HousingModel, type(None)), "thermal": (ThermalModel, type(None))}
         for name, allowed in kinds.items():
             value = getattr(self, name)
             if not isinstance(value, allowed):
@@ -120,3 +127,12 @@ def refuse_surface(setup: BearingSetup, where: str, instead: str) -> None:
         raise ValueError(f"{' and '.join(parts)}: {where} solves a perfect bearing (a defect or waviness has no "
                          f"steady state); run it with {instead}, or give the bearing without its surface "
                          "(setup.replace(surface=SurfaceModel()))")
+
+
+def refuse_thermal(setup: BearingSetup, where: str) -> None:
+    """A ValueError naming the thermal section a command without temperatures cannot use
+    (MODEL.md §14: so far the steady state solves the network)."""
+    if setup.thermal is not None:
+        raise ValueError(f"[thermal]: {where} does not model temperatures yet (the steady state does: "
+                         "steady_state, or the CLI's 'steady'); give the bearing without its thermal "
+                         "section (setup.replace(thermal=None)) to run it isothermal")

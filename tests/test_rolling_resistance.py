@@ -83,7 +83,8 @@ def test_couple_dissipates_twice_force_times_rolling_speed():
 
 def test_thermal_factor():
     """Zhu & Cheng's φ_T: 1 at rest, falling with speed and with sliding, and by hand at
-    L = 0.546, S = 0.01, p_H/E' = 0.0059 (the 35-mm bearing's outer contact at 72 000 rpm)."""
+    L = 0.546, S = 0.01, p_H/E' = 0.0059 (a point of the fit's range in the 35-mm bearing's oil;
+    its outer contact at 72 000 rpm has L 3.21, p_H/E' 0.0093, MODEL.md §11e)."""
     eta, c_t, k = 3.2e-3, 0.016, 0.15
     speed = math.sqrt(0.546 * k / (eta * c_t))
     p_h = 0.0059 * E_PRIME

@@ -27,7 +27,7 @@ from contact.surface import SurfaceModel, surface_record
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import as_setup
 from ..errors import SurfaceStartWarning
-from ..setup import FROM_SETUP, BearingSetup
+from ..setup import FROM_SETUP, BearingSetup, refuse_thermal
 from ..presets import REFERENCE_BEARING
 from ..races import Race, move_body
 from ..solvers.surface_start import surface_start
@@ -184,6 +184,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
     if surface is None:
         surface = SurfaceModel()
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contactLaw, cage=cage, drag=ballDrag, surface=surface)
+    refuse_thermal(setup, "CreateAngularContactBearing (the dynamic model)")
     bearing = setup.bearing
     surface_record(setup.surface, bearing)  # its checks against this bearing's geometry, before mbs is touched
     inner, outer = check_races(mbs, innerRace, outerRace, setup)

@@ -2,7 +2,7 @@
 that produced it (bearing, lubricant, drag, contact law, package version).
 
 Names follow the Python attributes; a suffix states the unit where the name alone does
-not (``_percent``, ``_deg``, ``_s``, ``_W``), and :func:`units_of` gives the unit of every
+not (``_percent``, ``_deg``, ``_s``, ``_W``, ``_K``, ``_Pa_s``, ``_W_per_K``), and :func:`units_of` gives the unit of every
 key of a result dictionary (SI; ``'-'``: dimensionless or a count/flag/text).
 """
 from __future__ import annotations
@@ -28,7 +28,7 @@ UNITS = {
 }
 
 #: unit suffixes of result names
-SUFFIXES = {"_percent": "%", "_deg": "deg", "_s": "s", "_W": "W"}
+SUFFIXES = {"_percent": "%", "_deg": "deg", "_Pa_s": "Pa s", "_W_per_K": "W/K", "_s": "s", "_W": "W", "_K": "K"}
 
 
 def unit_of(name: str) -> str:
@@ -80,6 +80,8 @@ def setup_inputs(setup, **settings) -> dict:
     extra = {"surface": setup.surface} if setup.surface.active else {}
     if setup.housing is not None:
         extra["housing"] = setup.housing
+    if setup.thermal is not None:
+        extra["thermal"] = setup.thermal
     registered = applied_terms(setup.contact_law)  # (contact.terms.register_term; none: not recorded)
     if registered:
         extra["registered_terms"] = [f"{name}: {_function_name(term.film_factor)}, "

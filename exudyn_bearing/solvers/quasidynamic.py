@@ -36,7 +36,7 @@ from ..bearing import Bearing
 from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..renamed import accepts_old_names
-from ..setup import FROM_SETUP, refuse_surface
+from ..setup import FROM_SETUP, refuse_surface, refuse_thermal
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
 from ..contact_records import contact_records
@@ -264,6 +264,7 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                      cage=CageModel() if cage is None else cage)
     refuse_surface(setup, "combined_load_state", "simulate or vibration")
+    refuse_thermal(setup, "combined_load_state")
     bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
     cage = None if cage is None or (plain and cage is FROM_SETUP) else setup.cage
     seed = seed_axial_load(axial_force, radial_force)

@@ -32,7 +32,7 @@ from ..bearingfile import as_setup
 from ..errors import QuasiStaticError
 from ..renamed import accepts_old_names
 from ..results.records import units_of
-from ..setup import FROM_SETUP, BearingSetup, refuse_surface
+from ..setup import FROM_SETUP, BearingSetup, refuse_surface, refuse_thermal
 from .fixed_angle import fixed_angle_balance
 from .geometric import Geometric, geometric_balance, geometric_start
 
@@ -152,6 +152,7 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
     if not isinstance(bearing, Bearing):  # (the builder's hot loop passes a Bearing)
         setup = as_setup(bearing)
         refuse_surface(setup, "solve_load_distribution", "simulate or vibration")
+        refuse_thermal(setup, "solve_load_distribution (no thermal expansion yet)")
         bearing = setup.bearing
         hertz_method = setup.contact_law.hertz_method if hertz_method is FROM_SETUP else hertz_method
     if hertz_method is FROM_SETUP:

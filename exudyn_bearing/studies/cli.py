@@ -347,6 +347,10 @@ def _steady(args) -> int:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
     setup = _setup(args)
+    if args.thermal and setup.thermal is None:
+        from contact.bearing_thermal import ThermalModel
+
+        setup = setup.replace(thermal=ThermalModel())
     state = steady_state(setup, axial_force=args.axial, rpm=args.rpm)
     data = state.to_dict()
     data["assumptions"] = assumptions_record(setup.drag, setup.contact_law, setup.lubricant)
@@ -374,6 +378,17 @@ def _steady(args) -> int:
           f"{state.outer_contact_angle_deg:.2f} deg")
     print(f"  minimum axial load: Hirano {data['hirano_minimum_axial']:.0f} N, Jones' gyroscopic criterion "
           f"{data['gyroscopic_minimum_axial']:.0f} N")
+    loss = state.power_loss_W
+    print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
+          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
+          f"drive {state.drive_power_W:.1f} W")
+    if state.thermal is not None and "heat_W" in state.thermal:
+        th = state.thermal
+        print("  temperatures (MODEL.md §14), K      " + ", ".join(f"{k.replace('_', ' ')} {v:.1f}"
+                                                               for k, v in th["temperatures_K"].items()))
+        print(f"  contact oil, K                      inner {th['contact_oil_temperature_K']['inner']:.1f}, outer "
+              f"{th['contact_oil_temperature_K']['outer']:.1f} (inlet {th['oil_inlet_K']:.1f}); heat carried off "
+              f"by the oil {th['removed_W']['oil_inlet']:.1f} W, to ambient {th['removed_W']['ambient']:.1f} W")
     print(f"  wall time {state.wall_time_s:.2f} s")
     return 0 if state.converged else 1
 

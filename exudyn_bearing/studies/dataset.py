@@ -27,7 +27,7 @@ from ..bearing import Bearing
 from ..bearingfile import as_setup
 from ..presets import REFERENCE_BEARING
 from ..results.records import setup_inputs
-from ..setup import BearingSetup
+from ..setup import BearingSetup, refuse_thermal
 from .grid import check_picklable, grid_values, guard_folder, read_journal, run_cases
 from .masking import Fluctuation, Masking
 from .vibration import FAULTS
@@ -241,6 +241,7 @@ def dataset(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, *, out, f
     (each case's fault is its label). ``workers``, ``client``, ``progress`` as for
     :func:`~exudyn_bearing.studies.skidmap.skid_map`."""
     setup = as_setup(bearing)
+    refuse_thermal(setup, "vibration_dataset")
     if setup.surface.defects:
         raise ValueError("bearing: its file holds defects; a data set gives each case its own fault (the label), "
                          "so remove the [[defect]] tables (waviness is kept)")

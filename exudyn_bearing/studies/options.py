@@ -110,6 +110,9 @@ def _steady_options(p) -> None:
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
     p.add_argument("--no-drag", action="store_true", help="switch the ball drag off")
+    p.add_argument("--thermal", action="store_true",
+                   help="solve the thermal network with the state (MODEL.md §14): the bearing file's [thermal], "
+                        "else its defaults; a file with [thermal] solves it without this flag")
     p.add_argument("--json", action="store_true", help="print JSON")
 
 

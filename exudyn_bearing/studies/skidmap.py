@@ -27,7 +27,7 @@ from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from ..presets import REFERENCE_BEARING
 from ..renamed import accepts_old_names
 from ..results.records import setup_inputs, units_of
-from ..setup import FROM_SETUP, BearingSetup
+from ..setup import FROM_SETUP, BearingSetup, refuse_thermal
 from ..solvers.steady import steady_state
 from .grid import check_picklable, grid_values, guard_folder, read_journal, run_cases
 from .skidmap_report import plot_skid_map, skid_map_markdown
@@ -312,6 +312,7 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
         The cage of every point (guidance, land and pocket friction, MODEL.md §11d).
     """
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage)
+    refuse_thermal(setup, "skid_map (its points are dynamic runs)")
     hint = (" (the axial load acts along the bearing axis; for a load the other way mount the bearing the other "
             "way round)")
     axial_force = grid_values("axial_force", axial_force, hint=hint)

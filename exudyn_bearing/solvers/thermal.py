@@ -1,0 +1,120 @@
+"""The steady state with its temperatures: the steady balance (MODEL.md §12) and the bearing's
+thermal network (§14) iterated to a fixed point, heat -> temperatures -> viscosities -> heat.
+
+Each ball–race contact takes its oil at the mean of its race's and the balls' temperatures,
+the cage land at the mean of the cage's and its guiding ring's (Walther's relation or the
+lubricant's exponential law, :meth:`contact.lubricant.Lubricant.at_temperature`).
+"""
+from __future__ import annotations
+
+import math
+import time as _time
+
+import numpy as np
+
+from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, place_heat
+from .steady_balance import solve_steady, steady_result
+from .steady_power import steady_losses
+
+__all__ = ["thermal_steady_state", "TEMPERATURE_TOLERANCE_K", "MAX_ITERATIONS"]
+
+#: the fixed point is reached when no node's temperature changes by more than this, K
+TEMPERATURE_TOLERANCE_K = 0.01
+#: fixed-point iterations before the solver gives up (converging runs took 5–12)
+MAX_ITERATIONS = 60
+
+
+def contact_oils(lubricant, temperatures: dict, guidance: str) -> tuple:
+    """(inner contact's, outer contact's, cage land's) lubricant at the node ``temperatures``
+    (K): each at the mean of the two surfaces that shear it (MODEL.md §14b)."""
+    def at(a, b):
+        return lubricant.at_temperature(0.5 * (temperatures[a] + temperatures[b]) - 273.15)
+
+    ring = "outer_ring" if guidance == "outer" else "inner_ring"
+    return at("inner_ring", "balls"), at("outer_ring", "balls"), at("cage", ring)
+
+
+def operating_point(solved) -> OperatingPoint:
+    """The speeds and contact sizes the network's conductances depend on (eq. 14.4, 14.5)."""
+    ball = solved.ball
+    w_c, w_b, _, _ = ball.unpack(solved.x)
+    kin, f = ball.contacts(solved.x)
+    _, hertz = ball.params.hertz(kin.contact_angle, ball.law.hertz_method)
+    a, b = hertz.semi_axes(f.normal_load)
+    contacts = [(float(a[k]), float(b[k]), float(f.film_thickness[k]), abs(float(kin.entrainment[k])))
+                for k in (0, 1)]
+    return OperatingPoint(solved.w_i, solved.w_o, float(w_c), float(np.linalg.norm(w_b)), *contacts)
+
+
+def _geometry(setup):
+    bearing, cage = setup.bearing, setup.cage
+    land = None
+    if cage.guided and cage.land_width > 0:
+        side = 1.0 if cage.guidance == "outer" else -1.0
+        radius = cage.land_radius or bearing.pitch_radius + side * bearing.ball_radius
+        land = (cage.guidance, float(radius), float(cage.land_width), 0.5 * float(cage.guide_clearance))
+    return setup.thermal.geometry(bearing.balls, bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle,
+                                  cage.mass_for(bearing), land)
+
+
+def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
+    """The :class:`~exudyn_bearing.solvers.steady.SteadyState` of ``setup`` (with its
+    ``thermal`` model) and its temperatures (MODEL.md §14d); called by
+    :func:`~exudyn_bearing.steady_state` with checked inputs."""
+    model, lubricant = setup.thermal, setup.lubricant
+    geometry = _geometry(setup)
+    oil_fraction = 1.0 if setup.drag is None else setup.drag.oil_volume_fraction
+    t_in = inlet_temperature(model, lubricant)
+    temperatures = {name: t_in for name in NODES}
+    relax, last_change, history = 1.0, math.inf, []
+    for iteration in range(1, MAX_ITERATIONS + 1):
+        inner, outer, land = contact_oils(lubricant, temperatures, setup.cage.guidance)
+        solved = solve_steady(setup, axial_force, rpm, outer_rpm, tol, races=(inner, outer), land_lubricant=land)
+        if not solved.converged:
+            message = f"thermal iteration {iteration}: {solved.message}"
+            return steady_result(solved._replace(message=message), _time.perf_counter() - start, inputs,
+                                 thermal=_record(None, None, temperatures, (inner, outer, land), iteration, False,
+                                                 history))
+        losses = steady_losses(solved)
+        network = bearing_network(model, geometry, operating_point(solved), lubricant, oil_fraction,
+                                  temperatures["oil"])
+        new = network.steady(place_heat(losses))
+        change = max(abs(new[k] - temperatures[k]) for k in NODES)
+        history.append(change)
+        if change < TEMPERATURE_TOLERANCE_K:
+            temperatures = new
+            break
+        if change > last_change:  # oscillating: damp the update
+            relax = max(0.25 * relax, 0.05)
+        last_change = change
+        temperatures = {k: temperatures[k] + relax * (new[k] - temperatures[k]) for k in NODES}
+        if not all(math.isfinite(v) for v in temperatures.values()):
+            raise ValueError(f"steady_state: the thermal network diverged at iteration {iteration} "
+                             f"(temperatures {temperatures})")
+    converged = history[-1] < TEMPERATURE_TOLERANCE_K
+    if not converged:
+        solved = solved._replace(converged=False, message=(
+            f"thermal fixed point not reached in {MAX_ITERATIONS} iterations (last change {history[-1]:.3g} K)"))
+    record = _record(network, losses, temperatures, (inner, outer, land), len(history), converged, history)
+    return steady_result(solved, _time.perf_counter() - start, inputs, thermal=record)
+
+
+def _record(network, losses, temperatures, oils, iterations, converged, history) -> dict:
+    """The SteadyState's ``thermal`` dictionary (JSON-ready, units by suffix)."""
+    out = {"temperatures_K": dict(temperatures),
+           "contact_oil_temperature_K": {k: oil.reference_temperature + 273.15
+                                         for k, oil in zip(("inner", "outer", "land"), oils)},
+           "contact_viscosity_Pa_s": {k: oil.viscosity for k, oil in zip(("inner", "outer", "land"), oils)},
+           "iterations": iterations, "converged": converged, "temperature_change_K": [float(v) for v in history]}
+    if network is None:
+        return out
+    heat = place_heat(losses)
+    removed = network.to_boundaries(temperatures)
+    made = sum(losses.values())
+    out |= {"heat_W": heat, "heat_by_place_W": {place: float(w) for place, w in losses.items()},
+            "removed_W": removed,
+            "heat_balance_percent": 100.0 * (made - sum(removed.values())) / made if made > 0 else 0.0,
+            "conductance_W_per_K": {f"{a}-{b}": float(g) for (a, b), g in
+                                    (network.links | network.boundary_links).items()},
+            "oil_inlet_K": network.boundary["oil_inlet"]}
+    return out
