@@ -219,19 +219,13 @@ def loads_bearing(text: str) -> BearingSetup:
             law = ContactLaw(**table)
         except ValueError as err:
             raise ValueError(f"[contact_law] {err}") from None
-    housing = None
-    if "housing" in data:
+    parts = {}
+    for name, cls in (("housing", HousingModel), ("thermal", ThermalModel)):  # None where absent
         try:
-            housing = _dataclass_from(HousingModel, data, "housing")
+            parts[name] = _dataclass_from(cls, data, name)
         except ValueError as err:
-            raise ValueError(f"[housing] {err}") from None
-    thermal = None
-    if "thermal" in data:
-        try:
-            thermal = _dataclass_from(ThermalModel, data, "thermal")
-        except ValueError as err:
-            raise ValueError(f"[thermal] {err}") from None
-    return BearingSetup(bearing, lubricant, drag, cage, law, _surface(data), housing, thermal)
+            raise ValueError(f"[{name}] {err}") from None
+    return BearingSetup(bearing, lubricant, drag, cage, law, _surface(data), **parts)
 
 
 def _surface(data: dict) -> SurfaceModel:
