@@ -15,7 +15,7 @@ from .heat_transfer import (cylinder_conduction, enthalpy_flow, film_conduction,
 from .thermal_network import ThermalNetwork
 
 __all__ = ["ThermalModel", "ThermalGeometry", "OperatingPoint", "NODES", "HEAT_SPLIT", "bearing_network",
-           "place_heat"]
+           "place_heat", "inlet_temperature"]
 
 NODES = ("shaft", "inner_ring", "balls", "cage", "outer_ring", "housing", "oil")
 
@@ -202,7 +202,7 @@ def bearing_network(model: ThermalModel, geometry: ThermalGeometry, point: Opera
     if g.land is not None:  # conduction across the land's oil film
         guidance, radius, width, play = g.land
         links[("cage", f"{guidance}_ring")] = oil.thermal_conductivity * 2.0 * math.pi * radius * width / play
-    boundary = {"ambient": model.ambient_temperature, "oil_inlet": _inlet(model, lubricant)}
+    boundary = {"ambient": model.ambient_temperature, "oil_inlet": inlet_temperature(model, lubricant)}
     area_housing = (2.0 * math.pi * g.housing_radius * g.housing_width
                     + 2.0 * math.pi * (g.housing_radius ** 2 - g.outside_radius ** 2))
     boundary_links = {
@@ -223,15 +223,11 @@ def _contact_conductance(contact, conductivity, diffusivity, oil) -> float:
     return 1.0 / (2.0 / spot + 1.0 / float(film_conduction(a, b, film, oil.thermal_conductivity)))
 
 
-def _inlet(model: ThermalModel, lubricant) -> float:
+def inlet_temperature(model: ThermalModel, lubricant) -> float:
+    """The oil's inlet temperature, K: the model's, else the lubricant's reference."""
     if model.oil_inlet_temperature is not None:
         return float(model.oil_inlet_temperature)
     return float(lubricant.reference_temperature) + 273.15
-
-
-def inlet_temperature(model: ThermalModel, lubricant) -> float:
-    """The oil's inlet temperature, K: the model's, else the lubricant's reference."""
-    return _inlet(model, lubricant)
 
 
 def place_heat(losses: dict) -> dict:

@@ -54,7 +54,8 @@ class Lubricant:
         oil at 23 degC, G = 0.1-1 GPa over 1-2 GPa (G/p 0.1-0.5).
     kinematic_viscosity_40, kinematic_viscosity_100 : float
         The oil's kinematic viscosities at 40 and 100 degC, m^2/s (the grades' data-sheet
-        values), which fix Walther's relation (ASTM D341) for :meth:`at_temperature`; 0 (the
+        values), which fix Walther's relation (ASTM D341) for :meth:`at_temperature` (its
+        shape: scaled through ``viscosity`` at ``reference_temperature``); 0 (the
         default): not given, the exponential law of ``temperature_viscosity`` instead. Used
         only where the oil's temperature changes (the thermal network, MODEL.md §14).
     """
@@ -116,7 +117,9 @@ class Lubricant:
 
         With both kinematic viscosities given, Walther's relation (ASTM D341),
         log10 log10(nu + 0.7) = A - B log10(T), nu in cSt and T in K, through the two points,
-        at constant density; else eta_0 exp(-c_etaT (T - T_R)) with c_etaT unchanged.
+        at constant density, scaled to pass through ``viscosity`` at ``reference_temperature``
+        (the oil's own value stays; Walther gives how it changes); else
+        eta_0 exp(-c_etaT (T - T_R)) with c_etaT unchanged.
         """
         if not isinstance(temperature, (int, float, np.floating)) or not math.isfinite(temperature):
             raise ValueError(f"temperature must be a finite number (degC), got {temperature!r}")
@@ -126,7 +129,8 @@ class Lubricant:
             eta = float(self.viscosity_at(0.0, temperature))
             return replace(self, viscosity=eta, reference_temperature=float(temperature))
         nu, slope = walther(self.kinematic_viscosity_40, self.kinematic_viscosity_100, float(temperature))
-        return replace(self, viscosity=self.density * nu, reference_temperature=float(temperature),
+        nu_ref = walther(self.kinematic_viscosity_40, self.kinematic_viscosity_100, self.reference_temperature)[0]
+        return replace(self, viscosity=self.viscosity * nu / nu_ref, reference_temperature=float(temperature),
                        temperature_viscosity=slope)
 
 

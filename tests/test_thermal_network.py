@@ -107,12 +107,16 @@ def test_heat_into_the_nodes_equals_the_losses():
 def test_walther_reproduces_the_oils_data_sheet_and_its_preset():
     """ESTER_TURBINE_OIL: 27.6 cSt at 40 degC, 5.1 cSt at 100 degC (the data points), and at
     121 degC 3.5 cSt x 919 kg/m^3 = 3.2 mPa s with slope 0.016 1/K, as its preset states
-    (the preset's own values, computed from ASTM D341 when it was made)."""
+    (the preset's own values, computed from ASTM D341 when it was made); the oil at another
+    temperature keeps its own viscosity at its reference and Walther's ratio elsewhere."""
     for t, nu in ((40.0, 27.6e-6), (100.0, 5.1e-6)):
         assert walther(27.6e-6, 5.1e-6, t)[0] == pytest.approx(nu, rel=1e-10)
+    assert walther(27.6e-6, 5.1e-6, 121.0)[0] * 919.0 == pytest.approx(3.2e-3, rel=0.01)
     oil = ESTER_TURBINE_OIL.at_temperature(121.0)
-    assert oil.viscosity == pytest.approx(ESTER_TURBINE_OIL.viscosity, rel=0.02)
+    assert oil.viscosity == pytest.approx(ESTER_TURBINE_OIL.viscosity, rel=1e-12)
     assert oil.temperature_viscosity == pytest.approx(ESTER_TURBINE_OIL.temperature_viscosity, rel=0.01)
+    ratio = walther(27.6e-6, 5.1e-6, 100.0)[0] / walther(27.6e-6, 5.1e-6, 121.0)[0]
+    assert ESTER_TURBINE_OIL.at_temperature(100.0).viscosity == pytest.approx(3.2e-3 * ratio, rel=1e-12)
     # the local slope is the derivative of ln(nu): central difference
     h = 0.01
     slope = -(math.log(walther(27.6e-6, 5.1e-6, 121 + h)[0]) - math.log(walther(27.6e-6, 5.1e-6, 121 - h)[0])) / (2 * h)

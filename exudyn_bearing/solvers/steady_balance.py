@@ -164,7 +164,7 @@ class _OneBall:
             rows[name] = None if a is None else np.stack([a[0], b[1]])
         return kin, type(inner)(**rows)
 
-    def _pocket(self, c, w_c, w_b):
+    def pocket_forces(self, c, w_c, w_b):
         """(pocket force, pocket friction, contact point - ball centre) on the ball under the
         land torque T = K (w_land - w_c): the Z pockets pass T on to the balls, so the cage's
         torque balance about the axis, Z (r_c P + (p x F_f)_z) = T with the friction
@@ -193,7 +193,7 @@ class _OneBall:
                                               self.c_d, self.density, self.b.ball_radius)[0]
         moment = f.moment[0] + f.moment[1] - self.inertia * w_c * np.cross(_E_Z, w_b)
         if self.land[0] > 0:  # a centred cage (eccentricity 0)
-            pocket, friction, arm = self._pocket(c, w_c, w_b)
+            pocket, friction, arm = self.pocket_forces(c, w_c, w_b)
             force += pocket + friction
             moment += np.cross(arm, friction)
         axial = f.force[0, 2] - self.axial / self.b.balls

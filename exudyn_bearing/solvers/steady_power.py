@@ -34,7 +34,7 @@ def steady_losses(solved) -> dict:
     out[guidance] = k_land * (w_land - w_c) ** 2
     pockets = 0.0
     if k_land > 0 and ball.pocket[0] > 0:
-        _, friction, arm = ball._pocket(c, w_c, w_b)
+        _, friction, arm = ball.pocket_forces(c, w_c, w_b)
         # the ball's surface against the cage's at the pocket contact
         slip = np.cross(w_b - w_c * _E_Z, arm)
         pockets = -z * float(friction @ slip)
