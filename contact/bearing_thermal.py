@@ -12,6 +12,7 @@ from typing import NamedTuple
 
 from .heat_transfer import (cylinder_conduction, enthalpy_flow, film_conduction, mixture_properties, plate_convection,
                             rod_conduction, spot_conductance)
+from .lubricant import _check_positive
 from .thermal_network import ThermalNetwork
 
 __all__ = ["ThermalModel", "ThermalGeometry", "OperatingPoint", "NODES", "HEAT_SPLIT", "bearing_network",
@@ -32,13 +33,6 @@ HEAT_SPLIT = {
     "land_inner": {"cage": 0.5, "inner_ring": 0.5},
     "pockets": {"balls": 0.5, "cage": 0.5},
 }
-
-
-def _positive(name, value, allow_none=False):
-    if value is None and allow_none:
-        return
-    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value) or value <= 0:
-        raise ValueError(f"{name} must be a positive finite number, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -89,19 +83,23 @@ class ThermalModel:
     def __post_init__(self) -> None:
         for name in ("oil_flow", "ambient_temperature", "oil_specific_heat", "steel_conductivity",
                      "steel_specific_heat", "ambient_convection"):
-            _positive(name, getattr(self, name))
+            _check_positive(name, getattr(self, name))
         for name in ("oil_inlet_temperature", "bore", "outside_diameter", "width", "housing_outside_diameter",
                      "housing_width", "shaft_length"):
-            _positive(name, getattr(self, name), allow_none=True)
+            if getattr(self, name) is not None:
+                _check_positive(name, getattr(self, name))
         for name in ("oil_inlet_temperature", "ambient_temperature"):
             value = getattr(self, name)
             if value is not None and not 200.0 < value < 1000.0:
                 raise ValueError(f"{name} is in kelvin and must lie in (200, 1000) K, got {value!r}")
 
-    def geometry(self, balls, ball_diameter, pitch_diameter, contact_angle, cage_mass, land=None) -> "ThermalGeometry":
-        """The network's :class:`ThermalGeometry` of a bearing (m, kg; ``contact_angle`` rad);
-        ``land`` = (guidance 'outer'/'inner', radius m, width m, radial play m) or None."""
-        d_m, d = pitch_diameter, ball_diameter
+    def geometry(self, bearing, cage_mass: float, land=None) -> "ThermalGeometry":
+        """The network's :class:`ThermalGeometry` of ``bearing`` (a record with ``balls``,
+        ``ball_diameter`` and ``pitch_diameter`` m, ``contact_angle`` rad, as
+        :class:`exudyn_bearing.Bearing`), its cage's mass (kg) and its guiding ``land`` =
+        (guidance 'outer'/'inner', radius m, width m, radial play m) or None."""
+        balls, contact_angle = bearing.balls, bearing.contact_angle
+        d_m, d = bearing.pitch_diameter, bearing.ball_diameter
         bore = self.bore or d_m - 1.7 * d
         outside = self.outside_diameter or d_m + 1.7 * d
         width = self.width or 1.8 * d

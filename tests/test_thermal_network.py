@@ -156,17 +156,16 @@ def test_bad_thermal_inputs_are_refused_by_name(kwargs, name):
 def test_impossible_ring_sizes_are_refused_by_name():
     b = HIGH_SPEED_35MM_BEARING
     with pytest.raises(ValueError, match="bore"):
-        ThermalModel(bore=45e-3).geometry(b.balls, b.ball_diameter, b.pitch_diameter, b.contact_angle, 0.01)
+        ThermalModel(bore=45e-3).geometry(b, 0.01)
     with pytest.raises(ValueError, match="outside_diameter"):
-        ThermalModel(outside_diameter=48e-3).geometry(b.balls, b.ball_diameter, b.pitch_diameter, b.contact_angle,
-                                                      0.01)
+        ThermalModel(outside_diameter=48e-3).geometry(b, 0.01)
 
 
 def test_the_oil_carries_off_rho_v_cp_per_kelvin():
     """With the rest insulated, all heat leaves with the oil: T_oil - T_in = Q / (rho V c_p)."""
     b = HIGH_SPEED_35MM_BEARING
     model = ThermalModel(oil_flow=1.2667e-5, oil_inlet_temperature=394.0, ambient_convection=1e-12)
-    geometry = model.geometry(b.balls, b.ball_diameter, b.pitch_diameter, b.contact_angle, 0.01)._replace(
+    geometry = model.geometry(b, 0.01)._replace(
         shaft_length=1e12)
     point = OperatingPoint(7540.0, 0.0, 3300.0, 40000.0, (1e-3, 1e-4, 5e-7, 80.0), (1.2e-3, 1.5e-4, 5e-7, 90.0))
     net = bearing_network(model, geometry, point, ESTER_TURBINE_OIL, 0.005, 394.0)

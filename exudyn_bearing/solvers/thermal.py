@@ -53,8 +53,7 @@ def _geometry(setup):
         side = 1.0 if cage.guidance == "outer" else -1.0
         radius = cage.land_radius or bearing.pitch_radius + side * bearing.ball_radius
         land = (cage.guidance, float(radius), float(cage.land_width), 0.5 * float(cage.guide_clearance))
-    return setup.thermal.geometry(bearing.balls, bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle,
-                                  cage.mass_for(bearing), land)
+    return setup.thermal.geometry(bearing, cage.mass_for(bearing), land)
 
 
 def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
