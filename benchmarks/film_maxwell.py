@@ -50,7 +50,8 @@ def viscous_stress(v, p, h, oil=OIL, lam=LAM):
 LAWS = {
     "exponential, ∫G dx, limit in τ_v": ("integral", "exponential", "inside"),
     "exponential, G ξ, limit in τ_v": ("local", "exponential", "inside"),
-    "series, G ξ, limit after (the model's law)": ("local", "series", "after"),
+    "exponential, G ξ, limit after": ("local", "exponential", "after"),
+    "series, G ξ, limit after": ("local", "series", "after"),
     "series, G ξ, limit in τ_v": ("local", "series", "inside"),
     "series, ∫G dx, limit in τ_v": ("integral", "series", "inside"),
 }

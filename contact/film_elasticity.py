@@ -37,7 +37,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["elastic_stress", "maxwell_streamline", "series_factor"]
+from .traction_law import Traction, limit_shear, thermal_factor
+
+__all__ = ["crook_viscous", "elastic_stress", "maxwell_streamline", "maxwell_traction", "series_factor"]
 
 
 def elastic_stress(x, y, a, b, v_x, v_y, omega_s, entrainment, h, modulus):
@@ -131,3 +133,116 @@ def maxwell_streamline(viscous, path, pressure, slip, entrainment, h, kappa, ite
             hi = np.where(below, hi, mid)
         tau[k] = viscous(0.5 * (lo + hi), pressure[k])
     return tau
+
+
+def crook_viscous(lubricant, h, limiting_shear=None):
+    """The viscous element of the Maxwell film: the (limited) Crook stress τ_v(s, p) and its
+    slope dτ_v/ds at slip s (m/s) and pressure p (Pa), arrays of shape (n, m) for n contacts of
+    film ``h`` (n,) m (MODEL.md §6, §6a; :func:`contact.traction_law.thermal_factor` and
+    :func:`~contact.traction_law.limit_shear`, the law of the traction rules)."""
+    eta0, c_p = float(lubricant.viscosity), float(lubricant.pressure_viscosity)
+    c1_coef = float(lubricant.temperature_viscosity) / (8.0 * float(lubricant.thermal_conductivity))
+    inv_h = 1.0 / np.asarray(h, dtype=float)[:, None]
+
+    def viscous(s, p):
+        eta = eta0 * np.exp(c_p * p)
+        c12 = eta * c1_coef
+        g, k = thermal_factor(c12 * s * s, derivative=True)
+        g = g * eta * inv_h
+        k = k * eta * inv_h * c12  # dτ/ds = g + k s²
+        if limiting_shear is not None:
+            g, k = limit_shear(g, s, limiting_shear * p, k)
+        return g * s, g + k * s * s
+
+    return viscous
+
+
+def maxwell_traction(u_x, u_y, omega_s, a, b, p_max, h, entrainment, viscous, kappa, lines=48, steps=400):
+    """Johnson & Tevaarwerk's Maxwell film solved over whole contacts, with spin: the reference
+    of MODEL.md §6b for the pointwise laws at a bearing's own contacts.
+
+    Along each streamline (|ū| h/G) dτ/dx = v(x) − s, τ = τ_v(|s|, p) s/|s|, G = κ p, τ = 0 at
+    the inlet edge, where v = (u_x − ω_s y, u_y + ω_s x) is the local slip (P14), which spin
+    turns along the streamline. Backward Euler: τ_k + k_k s_k = τ_(k−1) + k_k v_k with
+    k_k = G Δx/(|ū| h), so s_k is parallel to the right side and its magnitude solves the
+    scalar τ_v(s) + k_k s = |τ_(k−1) + k_k v_k| (safeguarded Newton, bracketed). Streamlines at
+    the Gauss–Legendre points of y ∈ (−a, a); along each x = ±c sin θ, θ uniform (steps
+    cluster at both edges); ``steps`` and ``steps``/2 combined by Richardson's extrapolation
+    (first order in the step).
+
+    Parameters
+    ----------
+    u_x, u_y, omega_s, a, b, p_max, h, entrainment : array_like (n,)
+        Slip at the centre (m/s), spin (rad/s), transverse and rolling semi-axes (m), peak
+        pressure (Pa), film (m) and signed entrainment speed along x (m/s, ≠ 0), as
+        :func:`contact.traction.crook_traction`.
+    viscous : callable
+        ``viscous(s, p)`` → (τ_v, dτ_v/ds) for arrays (n, lines), e.g. :func:`crook_viscous`.
+    kappa : float
+        κ = G/p.
+    lines, steps : int
+        Streamlines and θ steps per streamline.
+
+    Returns
+    -------
+    Traction
+        fx, fy (N), mz (N m) on the ball and the heat ∬ τ·v dA (W), (n,).
+    """
+    u_x, u_y, om, a, b, pm, h, ent = (np.atleast_1d(np.asarray(v, dtype=float))
+                                       for v in (u_x, u_y, omega_s, a, b, p_max, h, entrainment))
+    yg, wy = np.polynomial.legendre.leggauss(lines)
+    y = a[:, None] * yg[None, :]
+    half = b[:, None] * np.sqrt(1.0 - yg ** 2)[None, :]  # half-length of each streamline, m
+    side = np.where(ent < 0, -1.0, 1.0)[:, None]
+    scale = (kappa / (np.abs(ent) * h))[:, None]  # G Δx/(|ū| h) = scale p Δx
+    sums = []
+    for n in (steps // 2, steps):
+        theta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, n + 1)
+        dth = theta[1] - theta[0]
+        total = np.zeros((4, u_x.size))
+        tau = np.zeros((2,) + y.shape)
+        s = np.zeros(y.shape)
+        x_prev = -side * half
+        for th in theta[1:]:
+            x = side * half * np.sin(th)
+            p = pm[:, None] * np.sqrt(1.0 - yg ** 2)[None, :] * np.cos(th)
+            v = np.stack([u_x[:, None] - om[:, None] * y, u_y[:, None] + om[:, None] * x])
+            kk = scale * p * np.abs(x - x_prev)
+            rhs = tau + kk * v
+            r = np.hypot(rhs[0], rhs[1])
+            s = _viscous_slip(viscous, p, kk, r, s)
+            t_mag, _ = viscous(s, p)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                tau = np.where((r > 0) & (p > 0), t_mag / np.where(r > 0, r, 1.0), 0.0) * rhs
+            w = half * np.cos(th) * dth * (a[:, None] * wy[None, :])  # dx dy
+            total += np.stack([(w * tau[0]).sum(1), (w * tau[1]).sum(1),
+                               (w * (x * tau[1] - y * tau[0])).sum(1), (w * (tau * v).sum(0)).sum(1)])
+            x_prev = x
+        sums.append(total)
+    fx, fy, mz, heat = 2.0 * sums[1] - sums[0]
+    return Traction(fx, fy, mz, heat)
+
+
+def _viscous_slip(viscous, p, kk, r, start, iterations=60, rtol=1e-12):
+    """The viscous slip s ≥ 0 with τ_v(s, p) + kk s = r (τ_v increasing): Newton from
+    ``start`` kept inside the bracket [0, r/kk] that each residual narrows, bisecting where a
+    step leaves it. 0 where r = 0 or p = 0 (no stress)."""
+    live = (r > 0) & (p > 0) & (kk > 0)
+    lo = np.zeros_like(r)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        hi = np.where(live, r / np.where(live, kk, 1.0), 0.0)
+    s = np.clip(start, lo, hi)
+    for _ in range(iterations):
+        tau, slope = viscous(s, p)
+        f = tau + kk * s - r
+        lo = np.where(f < 0, s, lo)
+        hi = np.where(f > 0, s, hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = s - f / (slope + kk)
+        inside = (step > lo) & (step < hi)
+        s_new = np.where(inside, step, 0.5 * (lo + hi))
+        done = ~live | (np.abs(f) <= rtol * r) | (hi - lo <= rtol * hi)
+        s = np.where(done, s, s_new)
+        if np.all(done):
+            break
+    return np.where(live, s, 0.0)
