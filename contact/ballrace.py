@@ -64,7 +64,7 @@ class ContactLaw:
         'crook-limited' (default): Crook thermal EHD traction with the smooth limiting shear
         stress |tau| = tau_L tanh(|tau_Crook| / tau_L), tau_L = Lambda p (MODEL.md §6a), Lambda
         the lubricant's ``limiting_shear_coefficient`` (0.047 for the reference oil), and the
-        film's elastic shear compliance in series (``film_elasticity``, MODEL.md §6b);
+        film's elastic shear compliance (``film_elasticity``, MODEL.md §6b);
         'crook': the paper's pure Crook law (MODEL.md §6); its isothermal Newtonian limit
         (:func:`contact.traction.newtonian_traction`, small slip only); regularized dry
         Coulomb friction (:func:`contact.friction.coulomb_traction`); or normal forces only.
@@ -93,7 +93,7 @@ class ContactLaw:
         applied to 'crook' too; None: the lubricant's value ('crook-limited') or no cap
         ('crook'). See :meth:`limiting_shear_for`.
     film_elasticity : bool or None
-        Put the film's elastic shear compliance in series with the Crook law (MODEL.md §6b,
+        Add the film's elastic shear compliance to the Crook law (MODEL.md §6b,
         Johnson & Tevaarwerk's Maxwell film, shear modulus G = kappa p with kappa the
         lubricant's ``film_shear_modulus_coefficient``): bounds the traction's initial slope
         by the film's stiffness instead of the Newtonian film's near-infinite one. None

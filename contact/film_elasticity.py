@@ -12,21 +12,21 @@ x_in = −sign(ū) b √(1 − y²/a²) the inlet edge of the ellipse. Over a no
 integrates to f = (8/3) G a b² u/(ū h): a finite initial slope of the traction, where the
 Newtonian film alone has ∬ η/h dA (near-infinite at 1–2 GPa: ../shared/STIFFNESS.md).
 
-The elastic and viscous (Crook) responses act in series: the local stress magnitude is
-|τ| = |τ_e| |τ_v| / (|τ_e| + |τ_v|), along the local slip as Crook's (so the heat τ·u stays
-≥ 0 and the rules keep their τ = g u structure): g_eff = g / (1 + g |v| / |τ_e|). Where
-|τ_e| ≫ |τ_v| (large slip, or slow entrainment) the law is Crook's; at small slip it is the
-elastic film's. The limiting shear (§6a) caps the result.
+The elastic and viscous (Crook) responses are combined as the Maxwell equation combines them
+for constant properties: |τ| = τ_v (1 − e^(−|τ_e|/τ_v)), along the local slip as Crook's (so
+the heat τ·u stays ≥ 0 and the rules keep their τ = g u structure): g_eff = g (1 − e^(−1/R)),
+R = g |v| / |τ_e| (:func:`compliance_factor`). Where |τ_e| ≫ |τ_v| (large slip, or slow
+entrainment) the law is Crook's; at small slip it is the elastic film's. The limiting shear
+(§6a) caps the result.
 
 This pointwise law approximates Johnson & Tevaarwerk's equation, which
-:func:`maxwell_streamline` solves along the streamlines. Against that solution, with the
-model's viscous law in it, the law is within −5.5 % to +2.4 % of the traction over
-z = G L/(η ū) from 0.01 to 100 (two contacts, 1.0 and 1.7 GPa; ``benchmarks/film_maxwell.py``,
-MODEL.md §6b). It is not the solution for a Newtonian film of constant properties, where the
-equation gives τ_v (1 − e^(−r)), r = |τ_e|/τ_v, and the series form r/(1 + r) is up to 21 %
-low in the transition; that exponential form, applied point by point to a real contact (the
-viscosity rises e^(c_ηP p)-fold towards the centre, the thermal and limited law is nearly
-plastic), was measured 25 % low there and is not used.
+:func:`maxwell_streamline` solves along the streamlines and :func:`maxwell_traction` over
+whole contacts with spin. Against them, with the model's viscous law in it: −3.0 % in the
+transition, +8.7 % at the worst small z (the initial slope, 1.0-GPa contact), over
+z = G L/(η ū) from 0.01 to 100 (``benchmarks/film_maxwell.py``); 0.15–1 % of the force at the
+reference bearing's own contacts near its skid threshold, where the series form
+|τ_e||τ_v|/(|τ_e| + |τ_v|) used before was 1.6–4 % off (``benchmarks/film_maxwell_contacts.py``,
+MODEL.md §6b).
 
 The modulus follows the pressure, G = κ p; κ is a lubricant input (MODEL.md §6b for its
 provenance: τ_L/G → 1/(2π) with pressure, Proc. R. Soc. Lond. A 372 (1980) 155, gives the
@@ -39,7 +39,7 @@ import numpy as np
 
 from .traction_law import Traction, limit_shear, thermal_factor
 
-__all__ = ["crook_viscous", "elastic_stress", "maxwell_streamline", "maxwell_traction", "series_factor"]
+__all__ = ["compliance_factor", "crook_viscous", "elastic_stress", "maxwell_streamline", "maxwell_traction"]
 
 
 def elastic_stress(x, y, a, b, v_x, v_y, omega_s, entrainment, h, modulus):
@@ -76,19 +76,18 @@ def elastic_stress(x, y, a, b, v_x, v_y, omega_s, entrainment, h, modulus):
     return np.where(speed > 0, stress, np.inf)
 
 
-def series_factor(g, slip, elastic):
-    """g_eff / g for the series elastic–viscous film, 1 / (1 + g |v| / |τ_e|) (MODEL.md §6b).
+def compliance_factor(g, slip, elastic):
+    """g_eff / g of the Maxwell film, 1 − e^(−|τ_e|/τ_v), τ_v = g |v| (MODEL.md §6b).
 
     ``g`` is the viscous stress per unit slip (τ_v = g v), ``slip`` |v| (m/s), ``elastic``
-    |τ_e| (Pa, may be inf). 0 where |τ_e| = 0 (the inlet edge) and the slip is not.
+    |τ_e| (Pa, may be inf). 1 where |τ_e| is infinite (no elastic limit) or the slip is 0 (no
+    stress either way); 0 where |τ_e| = 0 (the inlet edge) and the slip is not.
     """
-    g = np.asarray(g, dtype=float)
-    viscous = g * np.asarray(slip, dtype=float)
+    viscous = np.asarray(g, dtype=float) * np.asarray(slip, dtype=float)
     elastic = np.asarray(elastic, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        factor = elastic / (elastic + viscous)
-    # 0/0 (no slip at the inlet edge): the stress is 0 either way; inf/inf: Crook's law
-    return np.where(np.isfinite(elastic), np.where(elastic + viscous > 0, factor, 1.0), 1.0)
+        ratio = elastic / viscous
+    return np.where(np.isnan(ratio), 1.0, -np.expm1(-ratio))
 
 
 def maxwell_streamline(viscous, path, pressure, slip, entrainment, h, kappa, iterations=100):

@@ -71,8 +71,8 @@ def crook_traction(u_x, u_y, omega_s, a, b, p_max, h, lubricant, *, temperature=
         :func:`contact.traction_law.limit_shear`; the Jacobian differentiates it exactly).
         ``None`` (default) or 0 = off, the paper's pure Crook law.
     film_modulus : float, optional
-        κ = G/p > 0: put the film's elastic shear compliance, shear modulus G = κ p, in series
-        with the (limited) Crook law (MODEL.md §6b, :mod:`contact.film_elasticity`); needs
+        κ = G/p > 0: add the film's elastic shear compliance, shear modulus G = κ p, to the
+        (limited) Crook law (MODEL.md §6b, :mod:`contact.film_elasticity`); needs
         ``entrainment``; no ``derivatives``. None (default): no elastic compliance.
     entrainment : array_like, optional
         Signed entrainment speed ū along t1, m/s (with ``film_modulus``): sets the inlet side

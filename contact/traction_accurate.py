@@ -37,7 +37,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .film_elasticity import elastic_stress, series_factor
+from .film_elasticity import compliance_factor, elastic_stress
 from .traction_law import _gauss01, limit_shear, thermal_factor
 
 __all__ = ["RuleParams", "rule_size"]
@@ -374,7 +374,7 @@ def _nodes(mode, A, idx, dirs, wdirs, a, b, pm, n_rad):
 def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, rule):
     """Moments of the Crook stress, smoothly limited to Λ p with ``lam_s`` = Λ (MODEL.md §6a),
     over the nodes (node arrays (k, M), contact arrays (k,)); ``elastic`` = (κ, a, b, ū) puts
-    the film's elastic compliance G = κ p in series (MODEL.md §6b; no derivatives).
+    the film's elastic compliance G = κ p (MODEL.md §6b; no derivatives).
 
     Returns (k, 4) [fx, fy, mz, heat] or, with derivatives, (k, 13) with the row-major
     3×3 Jacobian appended.  With τ = g u and u = (u_x − ω y, u_y + ω x):
@@ -396,11 +396,11 @@ def _integrate(x, y, W, p, ux, uy, om, eta_t, inv_h, rule):
     if derivatives:
         wk = eta * H
         wk *= c12  # ∂τ/∂u = g I + k u uᵀ
-    if elastic is not None:  # Maxwell film in series (MODEL.md §6b)
+    if elastic is not None:  # the Maxwell film's elastic compliance (MODEL.md §6b)
         kap, a, b, ent = elastic
         tau_e = elastic_stress(x, y, a[:, None], b[:, None], vx, vy, om[:, None], ent[:, None],
                                1.0 / inv_h[:, None], kap * p)
-        wg = wg * series_factor(wg, np.sqrt(v2), tau_e)
+        wg = wg * compliance_factor(wg, np.sqrt(v2), tau_e)
     if lam_s is not None:  # |τ| = Λp tanh(|τ_C|/(Λp)) (MODEL.md §6a)
         wg, wk = limit_shear(wg, np.sqrt(v2), lam_s * p, wk if derivatives else None)
     wg *= W

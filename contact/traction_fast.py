@@ -146,7 +146,7 @@ def _fast_crook(ux, uy, om, a, b, pm, hh, eta_t, rule):
     """The fast rule for validated flat float64 arrays (n,) with the
     :class:`~contact.traction_accurate.RuleParams` ``rule``.  Returns (4, n) [fx, fy, mz,
     heat] or, with derivatives, (13, n) with the row-major Jacobian appended; ``elastic`` =
-    (κ, ū (n,)) puts the film's elastic compliance in series (MODEL.md §6b, no derivatives).
+    (κ, ū (n,)) adds the film's elastic compliance (MODEL.md §6b, no derivatives).
 
     Nodes are laid out (R radial, D directions, n contacts), contacts innermost, so that
     per-ray arrays (D, n) broadcast over whole contiguous blocks. The stages below share one
@@ -379,8 +379,9 @@ def _fast_law(k):
 
 
 def _fast_elastic(k):
-    """The Maxwell film in series (MODEL.md §6b): g/(1 + R), R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|)
-    with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since the inlet (contact.kernels.crook)."""
+    """The Maxwell film's elastic compliance (MODEL.md §6b): g (1 − e^(−1/R)),
+    R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|) with τ_C' = g √u2, Ξ = ξ/b, w the slip averaged since
+    the inlet (contact.kernels.crook)."""
     kap, ent = k.elastic
     om, b, rho, c = k.om, k.b, k.rho, k.c
     sgn = np.where(ent < 0, -1.0, 1.0)
@@ -392,7 +393,9 @@ def _fast_elastic(k):
     oxi = omb * xi
     w2 = k.u2 * (1.0 / k.cth).astype(_F32) + oxi * (_F32(0.25) * oxi - k.uOy.astype(_F32) - omb * c * rho)
     dd = k.sigma * np.abs(xi) * np.sqrt(np.maximum(w2, _F32(0.0))) + _F32(1e-30)  # no 0/0 at ū → 0
-    k.G = k.G * (dd / (dd + k.G * np.sqrt(k.u2) * er0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv_r = dd / (k.G * np.sqrt(k.u2) * er0)  # 1/R; inf without stress or elastic limit
+    k.G = k.G * -np.expm1(-np.nan_to_num(inv_r, nan=np.inf))
 
 
 def _fast_sums(k):

@@ -103,7 +103,7 @@ def solve_balance(bearing, lubricant, axial, rpm, drag_coefficient, oil_density,
     race at ``rpm``, with drag F_D = 1/2 C_D rho pi r² v² for the given C_D and oil
     density (kg/m³; MODEL.md §8) and Crook's traction, capped smoothly at
     ``limiting_shear`` x p (MODEL.md §6a; None: the paper's pure law), with the film's elastic
-    compliance G = ``film_modulus`` x p in series (MODEL.md §6b; None: none).
+    compliance G = ``film_modulus`` x p (MODEL.md §6b; None: none).
     ``start_axis``: the first guess of the ball's spin axis, 'free' (tilted by the free angle)
     or 'outer' (perpendicular to the quasi-static outer contact normal: at high speed the
     outer race controls the ball)."""

@@ -43,7 +43,7 @@ DRAG_COEFFICIENT, OIL_DENSITY = 0.5, 860.0
 #: representative mineral-oil value (measured 0.03-0.1: Höglund & Jacobson 1986; Wikström &
 #: Höglund 1994; not traced to a primary table).
 LIMITING_SHEAR = 0.047
-#: MODEL.md §6b: and puts the film's elastic shear compliance in series, G = kappa p, kappa
+#: MODEL.md §6b: and adds the film's elastic shear compliance (Maxwell), G = kappa p, kappa
 #: 0.2953 chosen so that tau_L/G = 1/(2 pi), the ratio approached with pressure in Proc. R. Soc.
 #: Lond. A 372 (1980) 155 (an input of its own, not rescaled with Lambda).
 FILM_MODULUS = 0.2953

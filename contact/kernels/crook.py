@@ -128,8 +128,19 @@ def _rays32_capped(ir, lam, a0, tlc, rho_tab, w_tab, ray, k):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
+def _compliance32(d, den):
+    """1 − e^(−d/den) in float32 for d > 0, den ≥ 0 (the Maxwell film's g_eff/g, MODEL.md §6b;
+    1 for den = 0: no viscous stress, or no elastic limit at ū = 0), written 2t/(1 + t) with
+    t = tanh(d/(2 den)): no cancellation at small d/den, where 1 − e^(−x) loses 1e-7/x."""
+    if den <= _F(0.0):
+        return _F1
+    t = _tanh32(_F(0.5) * d / den)
+    return (t + t) / (_F1 + t)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
 def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
-    """g of one node with the film's elastic compliance in series (MODEL.md §6b) and, for
+    """g of one node with the film's elastic compliance (MODEL.md §6b) and, for
     ``tlc32`` > 0, the smooth limiting shear (float32; see :func:`_rays32_elastic`)."""
     xo, yo, sgn, omb, uoy, er0, icth = el[0], el[1], el[2], el[3], el[4], el[5], el[6]
     rho = rm * pr
@@ -148,7 +159,7 @@ def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
     oxi = omb * xi
     w2 = av * icth + oxi * (_F(0.25) * oxi - uoy - omb * cd * rho)
     d = sg * abs(xi) * math.sqrt(max(w2, _F(0.0))) + _F(1e-30)  # R = τ_C' er0/d (no 0/0 at ū → 0)
-    f = d / (d + tc * er0)  # 1/(1 + R), R = τ_v/|τ_e|
+    f = _compliance32(d, tc * er0)  # 1 − e^(−1/R), R = τ_v/|τ_e|
     if tlc32 > _F(0.0):
         return (tlc32 * sg * eh) * _tanh32(tc * f * itlc32 / sg) / sq
     return tc * f * eh / sq
@@ -156,7 +167,7 @@ def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS)
 def _rays32_elastic(ir, lam, a0, tlc, rho_tab, w_tab, ray, el64, k):
-    """:func:`_rays32` with the film's elastic compliance in series (MODEL.md §6b): g/(1 + R),
+    """:func:`_rays32` with the film's elastic compliance (MODEL.md §6b): g (1 − e^(−1/R)),
     R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|), Ξ = ξ/b the distance from the inlet edge and w the
     strain rate averaged since the inlet; then the smooth limiting shear for ``tlc`` > 0.
     ``ray`` rows 4, 5: the ray's direction (c, s) in normalized coordinates; ``el64``: Xo,
@@ -214,14 +225,15 @@ def _ray_sums(geo, d, a0, lam, tlc, ir, rho_tab, w_tab, scratch, el):
         z = sq + psi / (one + rt)
         u1 = one + z
         g = math.log(u1) * (z / (u1 - one)) / (sq * rt) * e
-        if el[5] > 0.0:  # elastic film in series (MODEL.md §6b)
+        if el[5] > 0.0:  # the film's elastic compliance (MODEL.md §6b)
             tc = g * math.sqrt(psi / e)  # τ_C'
             yy = el[1] + rho * sd
             xi = el[0] + rho * cd + el[2] * math.sqrt(max(1.0 - yy * yy, 0.0))
             oxi = el[3] * xi
             w2 = (psi / e) * el[6] + oxi * (0.25 * oxi - el[4] - el[3] * cd * rho)
             dd = sg * abs(xi) * math.sqrt(max(w2, 0.0)) + 1e-30
-            g *= dd / (dd + tc * el[5])
+            den = tc * el[5]
+            g *= -math.expm1(-dd / den) if den > 0.0 else 1.0
         if tlc > 0.0:  # smooth limiting shear (MODEL.md §6a)
             x = g * math.sqrt(psi / e) / (tlc * sg)
             if x > 0.0:
