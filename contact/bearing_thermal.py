@@ -64,6 +64,12 @@ class ThermalModel:
         W/(m K), J/(kg K) of rings, balls, shaft, housing (40 and 460: bearing steels).
     ambient_convection : float
         Housing surface to still air, W/(m^2 K) (10: natural convection, 2–25).
+    assembly_temperature : float
+        K at which the bearing's dimensions are given (293.15); the rings and balls grow
+        from it (MODEL.md §14f).
+    ring_expansion, ball_expansion : float
+        Linear thermal expansion coefficients of the rings and balls, 1/K (11.9e-6: AISI
+        52100; silicon nitride balls 2.8e-6; 0: no growth).
     """
 
     oil_flow: float = 1e-5
@@ -79,6 +85,9 @@ class ThermalModel:
     steel_conductivity: float = 40.0
     steel_specific_heat: float = 460.0
     ambient_convection: float = 10.0
+    assembly_temperature: float = 293.15
+    ring_expansion: float = 11.9e-6
+    ball_expansion: float = 11.9e-6
 
     def __post_init__(self) -> None:
         for name in ("oil_flow", "ambient_temperature", "oil_specific_heat", "steel_conductivity",
@@ -88,7 +97,13 @@ class ThermalModel:
                      "housing_width", "shaft_length"):
             if getattr(self, name) is not None:
                 _check_positive(name, getattr(self, name))
-        for name in ("oil_inlet_temperature", "ambient_temperature"):
+        for name in ("ring_expansion", "ball_expansion"):
+            _check_positive(name, getattr(self, name), allow_zero=True)
+            if getattr(self, name) > 1e-4:
+                raise ValueError(f"{name} is a linear expansion coefficient in 1/K (steel 1.2e-5), got "
+                                 f"{getattr(self, name)!r}")
+        _check_positive("assembly_temperature", self.assembly_temperature)
+        for name in ("oil_inlet_temperature", "ambient_temperature", "assembly_temperature"):
             value = getattr(self, name)
             if value is not None and not 200.0 < value < 1000.0:
                 raise ValueError(f"{name} is in kelvin and must lie in (200, 1000) K, got {value!r}")

@@ -6,12 +6,13 @@ All quantities SI (m, kg, Pa, rad). Files use degrees for angles (see
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
 
 from contact import geometry, hertz
+from contact.thermal_expansion import heated_geometry
 
 
 def _finite(name: str, value, *, positive: bool = True) -> None:
@@ -212,3 +213,16 @@ class Bearing:
         angle = self.contact_angle if contact_angle is None else contact_angle
         gamma = self.ball_diameter * math.cos(angle) / self.pitch_diameter
         return 0.5 * inner_speed * (1.0 - gamma) + 0.5 * outer_speed * (1.0 + gamma)
+
+    def expanded(self, rise_inner: float, rise_outer: float, rise_balls: float, ring_expansion: float,
+                 ball_expansion: float) -> "Bearing":
+        """This bearing at running temperatures (MODEL.md §14f, eq. 14.9): the rings and balls
+        grown by their linear expansion coefficients (1/K) times their rises above the assembly
+        temperature (K); the ball mass kept. A ValueError where the expansion closes the
+        clearance (:func:`contact.thermal_expansion.heated_geometry`)."""
+        g = heated_geometry(self.ball_diameter, self.pitch_diameter, self.contact_angle, self.inner_conformity,
+                            self.outer_conformity, rise_inner, rise_outer, rise_balls, ring_expansion, ball_expansion)
+        return replace(self, ball_diameter=g.ball_diameter, pitch_diameter=g.pitch_diameter,
+                       inner_conformity=g.inner_conformity, outer_conformity=g.outer_conformity,
+                       contact_angle=g.contact_angle, ball_mass=self.ball_mass)
+

@@ -65,6 +65,7 @@ Example::
     oil_inlet_temperature = 394.0    # K; absent: the lubricant's reference temperature
     ambient_temperature = 293.15     # K
     bore = 35e-3                     # m; absent: estimated (outside_diameter, width likewise)
+    ring_expansion = 11.9e-6         # 1/K (ball_expansion likewise); from assembly_temperature, 293.15 K
 
 A file reads into a :class:`~exudyn_bearing.setup.BearingSetup`. A function that takes a
 ``bearing`` takes it too, or its path, and then every part the file gives unless that part

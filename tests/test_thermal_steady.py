@@ -7,10 +7,11 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from contact.bearing_thermal import ThermalModel
-from exudyn_bearing import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG,
+from exudyn_bearing import (Bearing, CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG,
                             SPINDLE_40MM_BEARING, BearingSetup, CageModel, ContactLaw, dumps_bearing, loads_bearing,
                             simulate, solve_load_distribution, steady_state)
 
@@ -46,7 +47,8 @@ def test_an_oil_whose_viscosity_ignores_temperature_gives_the_isothermal_state()
                                kinematic_viscosity_100=0.0)
     setup = HIGH_SPEED.replace(lubricant=flat)
     iso = steady_state(setup, axial_force=667.0, rpm=28000.0)
-    hot = steady_state(setup.replace(thermal=TP2275), axial_force=667.0, rpm=28000.0)
+    rigid = dataclasses.replace(TP2275, ring_expansion=0.0, ball_expansion=0.0)  # the geometry as given
+    hot = steady_state(setup.replace(thermal=rigid), axial_force=667.0, rpm=28000.0)
     assert hot.converged and hot.thermal["converged"]
     assert hot.thermal["temperatures_K"]["balls"] > 394.0 + 5.0  # it did heat up
     assert hot.kinematic_cage_slip_percent == pytest.approx(iso.kinematic_cage_slip_percent, rel=1e-7)
@@ -80,11 +82,29 @@ def test_the_hot_bearing_balances_its_heat_and_loses_less_than_the_cold_one():
 
 
 def test_a_deep_groove_bearing_reaches_its_thermal_fixed_point():
-    setup = BearingSetup(CWRU_6205_BEARING, thermal=ThermalModel(oil_inlet_temperature=313.15))
-    state = steady_state(setup, axial_force=300.0, rpm=1800.0)
+    """The 6205 with 15 um of diametral clearance (a normal clearance for its size) under
+    [thermal]: the fixed point, its heat balance, and the clearance it runs with (eq. 14.9)
+    equal to Harris's ΔP_d = α(ΔT_o d_o − ΔT_i d_i − 2 ΔT_b D) at its node temperatures."""
+    fields = {f.name: getattr(CWRU_6205_BEARING, f.name) for f in dataclasses.fields(CWRU_6205_BEARING)
+              if f.name != "contact_angle"}
+    with_play = Bearing.from_clearance(diametral_clearance=15e-6, **fields)
+    model = ThermalModel(oil_inlet_temperature=313.15)
+    state = steady_state(BearingSetup(with_play, thermal=model), axial_force=300.0, rpm=1800.0)
     assert state.converged and state.thermal["converged"]
     assert abs(state.thermal["heat_balance_percent"]) < 0.1
     assert state.drive_power_W == pytest.approx(state.power_loss_W["total"], rel=2e-5)
+    t = {k: v - model.assembly_temperature for k, v in state.thermal["temperatures_K"].items()}
+    b = with_play
+    d_i = b.pitch_diameter - b.ball_diameter * (2 * b.inner_conformity - (2 * b.inner_conformity - 1)
+                                                * np.cos(b.contact_angle))
+    d_o = b.pitch_diameter + b.ball_diameter * (2 * b.outer_conformity - (2 * b.outer_conformity - 1)
+                                                * np.cos(b.contact_angle))
+    harris = model.ring_expansion * (t["outer_ring"] * d_o - t["inner_ring"] * d_i) \
+        - 2 * model.ball_expansion * t["balls"] * b.ball_diameter
+    # the state was solved with the geometry of its last iterate, within the fixed point's 0.01 K
+    bound = model.ring_expansion * 0.01 * (d_o + d_i + 2 * b.ball_diameter)
+    assert state.thermal["running_geometry"]["diametral_clearance_change_m"] == pytest.approx(harris, abs=bound)
+    assert abs(harris) > 1e-8  # it did change
 
 
 def test_the_thermal_section_round_trips_and_is_refused_where_no_temperatures_are_modelled():

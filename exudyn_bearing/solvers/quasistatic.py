@@ -152,7 +152,7 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
     if not isinstance(bearing, Bearing):  # (the builder's hot loop passes a Bearing)
         setup = as_setup(bearing)
         refuse_surface(setup, "solve_load_distribution", "simulate or vibration")
-        refuse_thermal(setup, "solve_load_distribution (no thermal expansion yet)")
+        refuse_thermal(setup, "solve_load_distribution (no temperatures: grow the bearing with Bearing.expanded)")
         bearing = setup.bearing
         hertz_method = setup.contact_law.hertz_method if hertz_method is FROM_SETUP else hertz_method
     if hertz_method is FROM_SETUP:

@@ -16,9 +16,11 @@ at ``inner_position`` (relative to the shaft's reference point) with the same ro
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
+
+from contact.thermal_expansion import heated_geometry
 
 from ..bearing import Bearing
 from ..jacobian import central_jacobian
@@ -62,6 +64,22 @@ class ShaftBearing:
             raise ValueError("rotation must be a proper 3x3 rotation matrix")
         if abs(abs(rot[2, 2]) - 1.0) > 1e-9:
             raise ValueError("rotation: the bearing axis (third column) must be the shaft axis, +z or -z")
+
+    def expanded(self, rise_inner: float, rise_outer: float, rise_balls: float, ring_expansion: float = 11.9e-6,
+                 ball_expansion: float = 11.9e-6) -> "ShaftBearing":
+        """This bearing at running temperatures (MODEL.md §14f): its geometry grown by the rises
+        (K) of its inner ring, outer ring and balls times the expansion coefficients (1/K;
+        AISI 52100 by default), its inner race pressed further along its axis by the change of
+        the touching distance δ_a (eq. 14.9), its races held at their axial places (the shaft's
+        and housing's own axial growth between the bearings is not included)."""
+        grown = heated_geometry(self.bearing.ball_diameter, self.bearing.pitch_diameter, self.bearing.contact_angle,
+                                self.bearing.inner_conformity, self.bearing.outer_conformity, rise_inner, rise_outer,
+                                rise_balls, ring_expansion, ball_expansion)
+        axis = np.asarray(self.rotation, dtype=float)[:, 2]
+        return replace(self, bearing=self.bearing.expanded(rise_inner, rise_outer, rise_balls, ring_expansion,
+                                                           ball_expansion),
+                       inner_position=tuple(np.asarray(self.inner_position, dtype=float)
+                                            + grown.axial_interference * axis))
 
     def inner_race_pose(self, shaft_displacement) -> np.ndarray:
         """(dx, dy, dz, theta_x, theta_y) of the inner race relative to the outer race, in

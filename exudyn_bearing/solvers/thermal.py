@@ -56,6 +56,15 @@ def _geometry(setup):
     return setup.thermal.geometry(bearing, cage.mass_for(bearing), land)
 
 
+def heated(setup, temperatures: dict):
+    """``setup`` with its bearing grown to the node ``temperatures`` (K) from the thermal
+    model's assembly temperature (MODEL.md §14f); a ValueError where that closes the clearance."""
+    m = setup.thermal
+    rise = {k: temperatures[k] - m.assembly_temperature for k in ("inner_ring", "outer_ring", "balls")}
+    return setup.replace(bearing=setup.bearing.expanded(rise["inner_ring"], rise["outer_ring"], rise["balls"],
+                                                        m.ring_expansion, m.ball_expansion))
+
+
 def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
     """The :class:`~exudyn_bearing.solvers.steady.SteadyState` of ``setup`` (with its
     ``thermal`` model) and its temperatures (MODEL.md §14d); called by
@@ -65,15 +74,25 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
     oil_fraction = 1.0 if setup.drag is None else setup.drag.oil_volume_fraction
     t_in = inlet_temperature(model, lubricant)
     temperatures = {name: t_in for name in NODES}
-    relax, last_change, history = 1.0, math.inf, []
+    relax, last_change, history, solved = 1.0, math.inf, [], None
     for iteration in range(1, MAX_ITERATIONS + 1):
         inner, outer, land = contact_oils(lubricant, temperatures, setup.cage.guidance)
-        solved = solve_steady(setup, axial_force, rpm, outer_rpm, tol, races=(inner, outer), land_lubricant=land)
+        try:
+            running = heated(setup, temperatures)
+        except ValueError as err:  # the clearance closed: no steady state at these temperatures
+            if solved is None:  # (uniform temperatures scale the bearing: never at the first iteration)
+                raise
+            solved = solved._replace(converged=False)
+            message = f"thermal iteration {iteration}: {err}"
+            return steady_result(solved._replace(message=message), _time.perf_counter() - start, inputs,
+                                 thermal=_record(None, None, temperatures, (inner, outer, land), iteration, False,
+                                                 history, None))
+        solved = solve_steady(running, axial_force, rpm, outer_rpm, tol, races=(inner, outer), land_lubricant=land)
         if not solved.converged:
             message = f"thermal iteration {iteration}: {solved.message}"
             return steady_result(solved._replace(message=message), _time.perf_counter() - start, inputs,
                                  thermal=_record(None, None, temperatures, (inner, outer, land), iteration, False,
-                                                 history))
+                                                 history, running.bearing))
         losses = steady_losses(solved)
         network = bearing_network(model, geometry, operating_point(solved), lubricant, oil_fraction,
                                   temperatures["oil"])
@@ -94,17 +113,26 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
     if not converged:
         solved = solved._replace(converged=False, message=(
             f"thermal fixed point not reached in {MAX_ITERATIONS} iterations (last change {history[-1]:.3g} K)"))
-    record = _record(network, losses, temperatures, (inner, outer, land), len(history), converged, history)
+    record = _record(network, losses, temperatures, (inner, outer, land), len(history), converged, history,
+                     running.bearing, setup.bearing)
     return steady_result(solved, _time.perf_counter() - start, inputs, thermal=record)
 
 
-def _record(network, losses, temperatures, oils, iterations, converged, history) -> dict:
-    """The SteadyState's ``thermal`` dictionary (JSON-ready, units by suffix)."""
+def _record(network, losses, temperatures, oils, iterations, converged, history, bearing, cold=None) -> dict:
+    """The SteadyState's ``thermal`` dictionary (JSON-ready, units by suffix); ``bearing`` the
+    geometry at the temperatures (None where the clearance closed), ``cold`` as given."""
     out = {"temperatures_K": dict(temperatures),
            "contact_oil_temperature_K": {k: oil.reference_temperature + 273.15
                                          for k, oil in zip(("inner", "outer", "land"), oils)},
            "contact_viscosity_Pa_s": {k: oil.viscosity for k, oil in zip(("inner", "outer", "land"), oils)},
            "iterations": iterations, "converged": converged, "temperature_change_K": [float(v) for v in history]}
+    if bearing is not None:
+        out["running_geometry"] = {"free_contact_angle_deg": math.degrees(bearing.contact_angle),
+                                   "diametral_clearance_m": bearing.diametral_clearance,
+                                   "ball_diameter_m": bearing.ball_diameter, "pitch_diameter_m": bearing.pitch_diameter}
+        if cold is not None:
+            out["running_geometry"]["diametral_clearance_change_m"] = (bearing.diametral_clearance
+                                                                       - cold.diametral_clearance)
     if network is None:
         return out
     heat = place_heat(losses)
