@@ -21,7 +21,6 @@ law, the solved Maxwell film included (registered here as traction laws of their
 import argparse
 import json
 import time
-from dataclasses import replace
 
 import numpy as np
 from scipy import optimize

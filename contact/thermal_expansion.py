@@ -10,9 +10,10 @@ the balls by ε_b = α_b ΔT_b. With the groove-centre circles of MODEL.md §2 (
     A' = R_i' + R_o' − D',   cos α0' = (c_i' − c_o') / A',   r_p' = c_i' − (R_i' − D'/2) cos α0'.   (14.9)
 
 The rings' axial growth about the ball's plane is left out (ε r sin α0 < 0.3 µm for a 35-mm
-bearing at 150 K). The diametral clearance then changes by, to first order,
-ΔP_d = α_o ΔT_o d_o − α_i ΔT_i d_i − 2 α_b ΔT_b D (d the raceway diameters; Harris &
+bearing at 150 K). The diametral clearance then changes by
+ΔP_d = α_o ΔT_o d_o − α_i ΔT_i d_i − 2 α_b ΔT_b D (d the groove-bottom diameters; Harris &
 Kotzalas, *Essential Concepts of Bearing Technology*, on the thermal change of clearance),
+exactly, since the clearance is linear in the ε's,
 and rings held at their axial positions (a preloaded pair's spacers) press the balls
 further by the change of the touching distance, δ_a = A sin α0 − A' sin α0'.
 """
@@ -44,6 +45,10 @@ def heated_geometry(ball_diameter, pitch_diameter, contact_angle, inner_conformi
     Raises ValueError where the expansion closes the clearance (α0' would be imaginary: the
     balls are pinched radially, which the free-contact-angle geometry cannot hold).
     """
+    for name, value in (("rise_inner", rise_inner), ("rise_outer", rise_outer), ("rise_balls", rise_balls),
+                        ("ring_expansion", ring_expansion), ("ball_expansion", ball_expansion)):
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value!r}")
     d, r_p, alpha = float(ball_diameter), 0.5 * float(pitch_diameter), float(contact_angle)
     eps_i = ring_expansion * rise_inner
     eps_o = ring_expansion * rise_outer
@@ -60,8 +65,8 @@ def heated_geometry(ball_diameter, pitch_diameter, contact_angle, inner_conformi
     if not cosine <= 1.0:
         closed = (centre_i - centre_o - reach) * 2.0
         raise ValueError(
-            f"thermal expansion closes the bearing's clearance (inner ring +{rise_inner:.3g} K, outer ring "
-            f"+{rise_outer:.3g} K, balls +{rise_balls:.3g} K: {closed * 1e6:.3g} um of diametral interference); "
+            f"thermal expansion closes the bearing's clearance (inner ring {rise_inner:+.3g} K, outer ring "
+            f"{rise_outer:+.3g} K, balls {rise_balls:+.3g} K: {closed * 1e6:.3g} um of diametral interference); "
             "the balls are pinched radially, which the model's geometry cannot hold")
     angle = math.acos(cosine)
     pitch_radius = centre_i - (groove_i - 0.5 * d_new) * cosine
