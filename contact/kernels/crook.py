@@ -17,6 +17,7 @@ from .. import traction_fast as _tr
 from .float32 import FLAGS as _FLAGS
 from .float32 import exp32 as _exp32
 from .float32 import log32 as _log32
+from .float32 import one_minus_exp_neg32 as _one_minus_exp_neg32
 from .float32 import tanh32 as _tanh32
 from .records import CrookTables, traction_record
 
@@ -128,17 +129,6 @@ def _rays32_capped(ir, lam, a0, tlc, rho_tab, w_tab, ray, k):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
-def _compliance32(d, den):
-    """1 − e^(−d/den) in float32 for d > 0, den ≥ 0 (the Maxwell film's g_eff/g, MODEL.md §6b;
-    1 for den = 0: no viscous stress, or no elastic limit at ū = 0), written 2t/(1 + t) with
-    t = tanh(d/(2 den)): no cancellation at small d/den, where 1 − e^(−x) loses 1e-7/x."""
-    if den <= _F(0.0):
-        return _F1
-    t = _tanh32(_F(0.5) * d / den)
-    return (t + t) / (_F1 + t)
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FLAGS, inline="always")
 def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
     """g of one node with the film's elastic compliance (MODEL.md §6b) and, for
     ``tlc32`` > 0, the smooth limiting shear (float32; see :func:`_rays32_elastic`)."""
@@ -159,7 +149,7 @@ def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
     oxi = omb * xi
     w2 = av * icth + oxi * (_F(0.25) * oxi - uoy - omb * cd * rho)
     d = sg * abs(xi) * math.sqrt(max(w2, _F(0.0))) + _F(1e-30)  # R = τ_C' er0/d (no 0/0 at ū → 0)
-    f = _compliance32(d, tc * er0)  # 1 − e^(−1/R), R = τ_v/|τ_e|
+    f = _one_minus_exp_neg32(d / (tc * er0))  # 1 − e^(−1/R), R = τ_v/|τ_e| (inf where τ_v = 0: 1)
     if tlc32 > _F(0.0):
         return (tlc32 * sg * eh) * _tanh32(tc * f * itlc32 / sg) / sq
     return tc * f * eh / sq

@@ -14,7 +14,7 @@ from llvmlite import ir
 from numba import njit, types
 from numba.extending import intrinsic
 
-__all__ = ["FLAGS", "exp32", "log32", "tanh32", "CAP_X", "CAP_P", "CAP_Q"]
+__all__ = ["FLAGS", "exp32", "log32", "tanh32", "one_minus_exp_neg32", "CAP_X", "CAP_P", "CAP_Q"]
 
 # fast-math flags without 'reassoc' (the (1 + z) - 1 correction of the ray loops must
 # survive) and without 'nnan'/'ninf' (NaN and inf are tested for)
@@ -101,4 +101,18 @@ def tanh32(x):
     num = ((p3 * y + p2) * y + p1) * y + p0
     den = ((q3 * y + q2) * y + q1) * y + q0
     return xc * num / den
+
+
+@njit(cache=True, error_model="numpy", fastmath=FLAGS, inline="always")
+def one_minus_exp_neg32(x):
+    """1 − e^(−x) for x >= 0 (inf included) in float32, as 2t/(1 + t), t = tanh(x/2) by the
+    rational fit of :func:`tanh32` (one division; no cancellation at small x, where
+    1 − e^(−x) loses 1e-7/x)."""
+    p0, p1, p2, p3 = _CP32
+    q0, q1, q2, q3 = _CQ32
+    xc = min(_F(0.5) * x, _CAP_X32)
+    y = xc * xc
+    num = xc * (((p3 * y + p2) * y + p1) * y + p0)
+    den = ((q3 * y + q2) * y + q1) * y + q0
+    return (num + num) / (den + num)
 
