@@ -26,10 +26,10 @@ import numpy as np
 from scipy import optimize
 
 from contact.ballrace import ContactLaw
-from contact.film_elasticity import crook_viscous, elastic_stress, maxwell_traction
+from contact.film_elasticity import compliance_factor, crook_viscous, elastic_stress, maxwell_traction
 from contact.lubricant import REFERENCE_LUBRICANT as OIL
 from contact.traction import crook_traction
-from contact.traction_law import Traction
+from contact.traction_law import Traction, limit_shear
 from contact.traction_laws import TractionModel, register_traction
 from exudyn_bearing import steady_state
 from exudyn_bearing.presets import REFERENCE_BEARING
@@ -66,13 +66,12 @@ def pointwise(law, ux, uy, om, a, b, pm, h, ent, lines=LINES, steps=STEPS):
         else:
             te = elastic_stress(x, y, a, b, vx, vy, om, ent, h, KAPPA * p)
             with np.errstate(invalid="ignore", divide="ignore"):
-                if law == "series":
+                if law == "series":  # the law before session 33 (no longer in the package)
                     mag = np.where(np.isfinite(te), te * tv / np.where(te + tv > 0, te + tv, 1.0), tv)
-                else:
-                    mag = np.where(tv > 0, tv * -np.expm1(-te / np.where(tv > 0, tv, 1.0)), 0.0)
-        tl = LAM * p
+                else:  # the package's own factor (τ_v = g |v| with g = τ_v, |v| = 1)
+                    mag = tv * compliance_factor(tv, 1.0, te)
+        mag = limit_shear(mag, 1.0, LAM * p)[0]  # Λp tanh(|τ|/(Λp)), 0 where p = 0 (MODEL.md §6a)
         with np.errstate(invalid="ignore", divide="ignore"):
-            mag = np.where(tl > 0, tl * np.tanh(mag / np.where(tl > 0, tl, 1.0)), 0.0)
             tx = np.where(speed > 0, mag * vx / np.where(speed > 0, speed, 1.0), 0.0)
             ty = np.where(speed > 0, mag * vy / np.where(speed > 0, speed, 1.0), 0.0)
         sums.append(np.stack([(w * tx).sum((1, 2)), (w * ty).sum((1, 2)), (w * (x * ty - y * tx)).sum((1, 2)),

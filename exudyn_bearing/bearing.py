@@ -12,7 +12,7 @@ from functools import cached_property
 import numpy as np
 
 from contact import geometry, hertz
-from contact.thermal_expansion import heated_geometry
+from contact.thermal_expansion import HeatedGeometry, heated_geometry
 
 
 def _finite(name: str, value, *, positive: bool = True) -> None:
@@ -220,9 +220,13 @@ class Bearing:
         grown by their linear expansion coefficients (1/K) times their rises above the assembly
         temperature (K); the ball mass kept. A ValueError where the expansion closes the
         clearance (:func:`contact.thermal_expansion.heated_geometry`)."""
-        g = heated_geometry(self.ball_diameter, self.pitch_diameter, self.contact_angle, self.inner_conformity,
-                            self.outer_conformity, rise_inner, rise_outer, rise_balls, ring_expansion, ball_expansion)
-        return replace(self, ball_diameter=g.ball_diameter, pitch_diameter=g.pitch_diameter,
-                       inner_conformity=g.inner_conformity, outer_conformity=g.outer_conformity,
-                       contact_angle=g.contact_angle, ball_mass=self.ball_mass)
+        return self.grown(heated_geometry(self.ball_diameter, self.pitch_diameter, self.contact_angle,
+                                          self.inner_conformity, self.outer_conformity, rise_inner, rise_outer,
+                                          rise_balls, ring_expansion, ball_expansion))
 
+    def grown(self, geometry: HeatedGeometry) -> "Bearing":
+        """This bearing with the sizes of ``geometry`` (:func:`contact.thermal_expansion.heated_geometry`
+        of this bearing, MODEL.md §14f), its ball mass and materials kept."""
+        return replace(self, ball_diameter=geometry.ball_diameter, pitch_diameter=geometry.pitch_diameter,
+                       inner_conformity=geometry.inner_conformity, outer_conformity=geometry.outer_conformity,
+                       contact_angle=geometry.contact_angle, ball_mass=self.ball_mass)

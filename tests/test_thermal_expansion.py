@@ -65,6 +65,11 @@ def test_the_touching_distance_follows_pythagoras():
 def test_a_clearance_that_closes_is_refused():
     with pytest.raises(ValueError, match="closes the bearing's clearance"):
         CWRU_6205_BEARING.expanded(10.0, 0.0, 5.0, ALPHA, ALPHA)  # zero clearance, inner ring hotter
+    # rigid rings, growing balls: the zero-clearance 6205 pinches at the oil's inlet temperature
+    from exudyn_bearing import BearingSetup, steady_state
+    rigid_rings = ThermalModel(oil_inlet_temperature=353.15, ring_expansion=0.0)
+    with pytest.raises(ValueError, match=r"closes the bearing's clearance \(inner ring \+60 K"):
+        steady_state(BearingSetup(CWRU_6205_BEARING, thermal=rigid_rings), axial_force=300.0, rpm=1800.0)
     with pytest.raises(ValueError, match="ring_expansion"):
         ThermalModel(ring_expansion=-1e-6)
     with pytest.raises(ValueError, match="ball_expansion is a linear expansion coefficient in 1/K"):

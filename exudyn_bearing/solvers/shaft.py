@@ -76,8 +76,7 @@ class ShaftBearing:
                                 self.bearing.inner_conformity, self.bearing.outer_conformity, rise_inner, rise_outer,
                                 rise_balls, ring_expansion, ball_expansion)
         axis = np.asarray(self.rotation, dtype=float)[:, 2]
-        return replace(self, bearing=self.bearing.expanded(rise_inner, rise_outer, rise_balls, ring_expansion,
-                                                           ball_expansion),
+        return replace(self, bearing=self.bearing.grown(grown),
                        inner_position=tuple(np.asarray(self.inner_position, dtype=float)
                                             + grown.axial_interference * axis))
 

@@ -80,19 +80,18 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
         try:
             running = heated(setup, temperatures)
         except ValueError as err:  # the clearance closed: no steady state at these temperatures
-            if solved is None:  # (uniform temperatures scale the bearing: never at the first iteration)
+            if solved is None:  # already at the inlet temperature: no state to report, the error says why
                 raise
-            solved = solved._replace(converged=False)
-            message = f"thermal iteration {iteration}: {err}"
-            return steady_result(solved._replace(message=message), _time.perf_counter() - start, inputs,
-                                 thermal=_record(None, None, temperatures, (inner, outer, land), iteration, False,
-                                                 history, None))
-        solved = solve_steady(running, axial_force, rpm, outer_rpm, tol, races=(inner, outer), land_lubricant=land)
-        if not solved.converged:
-            message = f"thermal iteration {iteration}: {solved.message}"
-            return steady_result(solved._replace(message=message), _time.perf_counter() - start, inputs,
-                                 thermal=_record(None, None, temperatures, (inner, outer, land), iteration, False,
-                                                 history, running.bearing))
+            why, grown = err, None
+        else:
+            solved = solve_steady(running, axial_force, rpm, outer_rpm, tol, races=(inner, outer),
+                                  land_lubricant=land)
+            why, grown = (None if solved.converged else solved.message), running.bearing
+        if why is not None:
+            message = f"thermal iteration {iteration}: {why}"
+            return steady_result(solved._replace(converged=False, message=message), _time.perf_counter() - start,
+                                 inputs, thermal=_record(None, None, temperatures, (inner, outer, land), iteration,
+                                                         False, history, bearing=grown))
         losses = steady_losses(solved)
         network = bearing_network(model, geometry, operating_point(solved), lubricant, oil_fraction,
                                   temperatures["oil"])
@@ -114,11 +113,11 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
         solved = solved._replace(converged=False, message=(
             f"thermal fixed point not reached in {MAX_ITERATIONS} iterations (last change {history[-1]:.3g} K)"))
     record = _record(network, losses, temperatures, (inner, outer, land), len(history), converged, history,
-                     running.bearing, setup.bearing)
+                     bearing=running.bearing, cold=setup.bearing)
     return steady_result(solved, _time.perf_counter() - start, inputs, thermal=record)
 
 
-def _record(network, losses, temperatures, oils, iterations, converged, history, bearing, cold=None) -> dict:
+def _record(network, losses, temperatures, oils, iterations, converged, history, *, bearing, cold=None) -> dict:
     """The SteadyState's ``thermal`` dictionary (JSON-ready, units by suffix); ``bearing`` the
     geometry at the temperatures (None where the clearance closed), ``cold`` as given."""
     out = {"temperatures_K": dict(temperatures),
