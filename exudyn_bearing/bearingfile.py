@@ -30,7 +30,8 @@ Example::
     kind = "rigid"                   # or "spring-chain", "none"
     guidance = "outer"               # or "inner", "balls"
     guide_clearance = 0.4e-3         # diametral land play, m
-    land_width = 0.0                 # m; > 0: the land's oil-film friction torque
+    land_width = 0.0                 # m; > 0: the land's oil film (friction torque and radial force)
+    land_film = true                 # false: the film's friction torque only, no radial force
     pocket_friction = 0.0            # ball-pocket friction coefficient
     [contact_law]                    # optional; ContactLaw() if absent (MODEL.md §6, §11)
     traction = "crook-limited"       # or "crook" (the paper's law), "newtonian", "coulomb", "none"
@@ -123,8 +124,9 @@ def as_setup(bearing, **given) -> BearingSetup:
 
 _SECTIONS = {"bearing", "material", "ball_material", "race_material", "lubricant", "drag", "cage", "contact_law",
              "defect", "waviness", "housing", "thermal"}
-#: [cage] keys whose values are words, not numbers
+#: [cage] keys whose values are words, not numbers, and those that are true or false
 _CAGE_WORDS = {"kind", "guidance"}
+_CAGE_FLAGS = {f.name for f in fields(CageModel) if f.type == "bool"}
 #: [contact_law] keys whose values are words, and those that are true or false: from the
 #: ContactLaw's own fields, so a new switch of the law is a key of the file without an edit here
 _LAW_WORDS = {f.name for f in fields(ContactLaw) if f.type == "str"}
@@ -208,7 +210,7 @@ def loads_bearing(text: str) -> BearingSetup:
     drag = _dataclass_from(BallDrag, data, "drag") or REFERENCE_DRAG
     cage = CageModel()
     if "cage" in data:
-        table = _table(data, "cage", {f.name for f in fields(CageModel)}, _CAGE_WORDS)
+        table = _table(data, "cage", {f.name for f in fields(CageModel)}, _CAGE_WORDS, _CAGE_FLAGS)
         try:
             cage = CageModel(**table)
         except ValueError as err:

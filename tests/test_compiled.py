@@ -272,10 +272,11 @@ def test_laws_the_kernel_does_not_cover_use_numpy(law):
 
 
 def test_land_kernel_is_the_numpy_land_force():
-    """The guiding-land kernel against contact.cage.land_forces on random states around the
-    play (inside, engaged, separating fast enough to clip), race arrays per state and
-    shared (1, 3)."""
+    """The guiding-land kernel against contact.cage.land_forces (and, with a film constant,
+    plus contact.land_film.land_film_forces) on random states around the play (inside,
+    engaged, separating fast enough to clip), race arrays per state and shared (1, 3)."""
     from contact.cage import land_forces
+    from contact.land_film import land_film_forces
 
     rng = np.random.default_rng(5)
     n = 400
@@ -287,19 +288,30 @@ def test_land_kernel_is_the_numpy_land_force():
     direction /= np.linalg.norm(direction, axis=1, keepdims=True)
     offset = rng.uniform(0.0, 0.35e-3, (n, 1)) * direction
     cage_v = rng.normal(0.0, 0.2, (n, 3))
+    spin = rng.normal(0.0, 2000.0, n)
     play, k, c = 0.2e-3, 1e7, 400.0
     for shared in (False, True):
-        ro, rv, ax = (race_o[:1], race_v[:1], axis[:1]) if shared else (race_o, race_v, axis)
-        cage_o = ro + offset
-        force, e = np.empty((n, 3)), np.empty(n)
-        compiled.land_forces(cage_o, cage_v, ro, rv, ax, play, k, c, force, e)
-        expected = land_forces(cage_o, cage_v, ro, rv, ax, play, k, c)
-        engaged = np.linalg.norm(expected, axis=1) > 0
-        assert 50 < engaged.sum() < n - 50  # both regimes present
-        np.testing.assert_allclose(force, expected, rtol=1e-12, atol=1e-12 * np.abs(expected).max())
-        d = cage_o - ro
-        np.testing.assert_allclose(e, np.linalg.norm(d - np.sum(d * ax, axis=1, keepdims=True) * ax, axis=1),
-                                   rtol=1e-12)
+        for film in (0.0, 3e-4):
+            ro, rv, ax = (race_o[:1], race_v[:1], axis[:1]) if shared else (race_o, race_v, axis)
+            cage_o = ro + offset
+            force, e = np.empty((n, 3)), np.empty(n)
+            compiled.land_forces(cage_o, cage_v, ro, rv, ax, play, k, c, film, spin, force, e)
+            expected = land_forces(cage_o, cage_v, ro, rv, ax, play, k, c)
+            engaged = np.linalg.norm(expected, axis=1) > 0
+            assert 50 < engaged.sum() < n - 50  # both regimes present
+            if film > 0:
+                axes = np.broadcast_to(ax, (n, 3))
+                d = cage_o - ro
+                radial = d - np.sum(d * axes, axis=1, keepdims=True) * axes
+                rate = cage_v - rv
+                rate = rate - np.sum(rate * axes, axis=1, keepdims=True) * axes
+                film_force = land_film_forces(radial, rate, axes, spin, film, play)
+                assert np.abs(film_force).max() > 0.1 * np.abs(expected).max()  # the film counts
+                expected = expected + film_force
+            np.testing.assert_allclose(force, expected, rtol=1e-10, atol=1e-10 * np.abs(expected).max())
+            d = cage_o - ro
+            np.testing.assert_allclose(e, np.linalg.norm(d - np.sum(d * ax, axis=1, keepdims=True) * ax, axis=1),
+                                       rtol=1e-12)
 
 
 def test_compilation_is_announced_once_when_no_cache_exists(monkeypatch, tmp_path, capsys):

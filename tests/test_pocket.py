@@ -80,5 +80,5 @@ def test_land_force_starts_from_zero_at_any_approach_speed():
     for pen in (1e-12, 0.1 * LAND_DAMPING_DEPTH, 0.7 * LAND_DAMPING_DEPTH, 2 * LAND_DAMPING_DEPTH):
         out, ecc = np.zeros((1, 3)), np.zeros(1)
         kernels.land_forces(np.array([[play + pen, 0.0, 0.0]]), v[None], race[None], race[None], axis[None], play, k, c,
-                            out, ecc)
+                            0.0, np.zeros(1), out, ecc)
         np.testing.assert_allclose(out[0], [force(pen), 0.0, 0.0], rtol=1e-12, atol=1e-12)

@@ -62,7 +62,8 @@ def test_each_source_grows_with_speed_as_its_law_says():
     (measured: inner 1.64 in 1.62–1.70; outer 2.31 against 2.08–2.16, the outer contact angle
     falling with speed raises its u_m and R_x: band +0.25 there); the cage land's Petroff
     shear T ∝ Δω at fixed eccentricity, its loss T Δω ∝ n² (band 1.8–2.5: the eccentricity
-    rises with speed up to its cap; measured 2.21); the traction and spin heat grows."""
+    rises with speed; measured 2.18 in these 10-ms runs, the cage still near its centre, with
+    and without the land film's force); the traction and spin heat grows."""
     from exudyn_bearing.cage import CageModel
 
     law = ContactLaw(rolling_resistance=True)

@@ -158,6 +158,8 @@ class Guide(NamedTuple):
     stiffness: float  #: N/m
     damping: float  #: N s/m
     friction: float  #: friction torque per unit slip speed of the land, N m s
+    film: float  #: K = η0 R L³ / c² of the film's short-bearing force, N s; 0: none (eq. 11d.1)
+    max_ratio: float  #: the largest ε the friction torque takes
 
 
 class Physics(NamedTuple):
@@ -192,7 +194,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     geometry, law, tables = kernels.RaceGeometry(*geometry), kernels.LawRecord(*law), kernels.CrookTables(*tables)
     terms, cage = terms_from_plain(terms), kernels.CageRecord(*cage)
     pocket_mu, pocket_slip = pocket
-    guide_race, guide_play, guide_stiffness, guide_damping, guide_friction = guide
+    guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, guide_film, guide_max_ratio = guide
     fixed_omega, applied, driven = inputs
     n = reference.shape[0] // 6
     z = balls.shape[0]
@@ -250,10 +252,12 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             for i in range(6):
                 o6[s, i] += react[0, j, s, i]
     if guide_race >= 0:
-        land, ecc = np.empty((1, 3)), np.empty(1)
+        land, ecc, spin = np.empty((1, 3)), np.empty(1), np.zeros(1)
+        for i in range(3):  # the film's surfaces' speeds about the race axis
+            spin[0] += (omega[0, cage_slot, i] + rw[0, guide_race, i]) * rr[0, guide_race, i, 2]
         kernels.land_forces(pos[:, cage_slot].copy(), vel[:, cage_slot].copy(), ro[:, guide_race].copy(),
                             rv[:, guide_race].copy(), rr[:, guide_race, :, 2].copy(), guide_play, guide_stiffness,
-                            guide_damping, land, ecc)
+                            guide_damping, guide_film, spin, land, ecc)
         for i in range(3):
             o6[cage_slot, i] += land[0, i]
         torque = np.zeros(3)
@@ -262,7 +266,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             slip = 0.0
             for i in range(3):
                 slip += (rw[0, guide_race, i] - omega[0, cage_slot, i]) * ax[i]
-            eps = min(ecc[0] / guide_play, 0.95)
+            eps = min(ecc[0] / guide_play, guide_max_ratio)
             t_land = guide_friction * slip / math.sqrt(1.0 - eps * eps)
             for i in range(3):
                 torque[i] = t_land * ax[i]
@@ -313,7 +317,7 @@ class CompiledForces:
         self.cage_slot = con.layout["cage"] if cage_kind == 1 else -1
         # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
         pocket = (float(con.cage.pocket_friction) if cage_kind == 1 else 0.0, float(con.cage.pocket_slip_scale))
-        guide = Guide(-1, 0.0, 0.0, 0.0, 0.0)
+        guide = Guide(-1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.95)
         if con.guide is not None:
             guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
         records = con.records

@@ -14,6 +14,7 @@ import numpy as np
 from contact import cage as cage_physics
 from contact.ballrace import ball_race_forces, with_surface
 from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
+from contact.land_film import land_film_forces
 from contact.surface import surface_record
 from ..cage import CageModel
 from ..contact_records import cage_record, contact_records
@@ -97,8 +98,9 @@ class BearingConnector(ConnectorDiagnostics):
         #: the cage and drag as both paths read them (:func:`exudyn_bearing.contact_records.cage_record`)
         self.cage_record = cage_record(setup, self.axis, self.origin)
         self.pocket_angles, self.cage_damping = self.cage_record.pocket_angles, self.cage_record.damping
-        # (race, radial play m, stiffness N/m, damping N s/m, friction constant N m s) of a
-        # land-guided cage; the constant 2 pi eta0 R³ L / c of its land friction (MODEL.md §11d)
+        # (race, radial play m, stiffness N/m, damping N s/m, friction constant N m s, film
+        # constant N s, largest ε) of a land-guided cage: 2 pi eta0 R³ L / c of its land
+        # friction, eta0 R L³ / c² of its film's force (MODEL.md §11d, eq. 11d.1)
         self.guide = None
         if cage.guided and cage.guide_clearance >= 0.25 * bearing.ball_diameter:
             raise ValueError(f"guide_clearance: {cage.guide_clearance:g} m of diametral land play is not below a "
@@ -109,7 +111,8 @@ class BearingConnector(ConnectorDiagnostics):
             if damping is None:
                 damping = 2 * 0.2 * np.sqrt(cage.guide_stiffness * cage.mass_for(bearing))
             self.guide = (cage.guidance, 0.5 * cage.guide_clearance, cage.guide_stiffness, damping,
-                          cage.land_friction_constant(bearing, lubricant))
+                          cage.land_friction_constant(bearing, lubricant), cage.land_film_constant(bearing, lubricant),
+                          cage.land_max_ratio)
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
         self.progress = None  # the runner's progress reporter while it runs (called with t)
@@ -125,7 +128,6 @@ class BearingConnector(ConnectorDiagnostics):
                 self._compiled = compiled.CompiledForces(self)
                 self._rotations = compiled.kernels.rotation_matrices
                 self._land_kernel = compiled.kernels.land_forces
-                self._frame_rows = (self.origin[None].copy(), np.zeros((1, 3)), self.axis[None].copy())
             else:
                 say_numpy_path(law)
 
@@ -332,33 +334,38 @@ class BearingConnector(ConnectorDiagnostics):
 
     def land_force(self, t, pos, rot, vel, omega):
         """Guiding-land force on the cage (B, 3), N, the guiding race's slot (or None) and
-        the cage's eccentricity (B,), m, for a batch of node states (omega GLOBAL);
-        :func:`contact.cage.land_forces`."""
-        race, play, stiffness, damping, _ = self.guide
+        the cage's eccentricity (B,), m, for a batch of node states (omega GLOBAL): the contact
+        beyond the play (:func:`contact.cage.land_forces`) and the film's short-bearing force
+        (:func:`contact.land_film.land_film_forces`, with its constant > 0)."""
+        race, play, stiffness, damping, _, film, _ = self.guide
         s = self.layout["cage"]
+        origin, rotation, v_race, w_race, slot = self._race_frame(race, t, pos, vel, rot, omega)
+        axis = rotation[..., 2]
+        spin = np.einsum("bi,bi->b", omega[:, s] + w_race, axis) if film > 0 else np.zeros(pos.shape[0])
         if self._land_kernel is not None:  # the same in one compiled loop (the numpy calls cost ~0.1 ms)
             c = np.ascontiguousarray
-            slot = self.layout[race]
-            if slot is None:  # a kinematic race: the bearing frame, at rest
-                origin, v_race, axis = self._frame_rows
-            else:
-                origin, rotation, v_race, _, _ = self._race_frame(race, t, pos, vel, rot, omega)
-                origin, v_race, axis = c(origin), c(v_race), c(rotation[..., 2])
             force, e = np.empty((pos.shape[0], 3)), np.empty(pos.shape[0])
-            self._land_kernel(c(pos[:, s]), c(vel[:, s]), origin, v_race, axis, play, stiffness, damping, force, e)
+            self._land_kernel(c(pos[:, s]), c(vel[:, s]), c(origin), c(v_race), c(axis), play, stiffness, damping,
+                              film, c(spin), force, e)
             return force, slot, e
-        origin, rotation, v_race, _, slot = self._race_frame(race, t, pos, vel, rot, omega)
-        force = cage_physics.land_forces(pos[:, s], vel[:, s], origin, v_race, rotation[..., 2], play, stiffness,
-                                         damping)
-        return force, slot, np.linalg.norm(cage_physics.radial_offset(pos[:, s], origin, rotation[..., 2]), axis=-1)
+        force = cage_physics.land_forces(pos[:, s], vel[:, s], origin, v_race, axis, play, stiffness, damping)
+        offset = cage_physics.radial_offset(pos[:, s], origin, axis)
+        if film > 0:
+            rate = vel[:, s] - v_race
+            rate = rate - np.einsum("bi,bi->b", rate, axis)[:, None] * axis
+            force = force + land_film_forces(offset, rate, axis, spin, film, play)
+        return force, slot, np.linalg.norm(offset, axis=-1)
 
     def _land_details(self, t, pos, rot, vel, omega) -> dict:
         """The :class:`ConnectorState` fields of the cage's land for B states, each (B,) or
         (B, 3): eccentricity (m; an unguided rigid cage's from the outer race axis), land force
-        (N, None: not guided) and, with land friction, the power its film dissipates,
-        T (w_race - w_cage), and the power its race puts in through it, T w_race (W)."""
+        (N, None: not guided), the power its force pair dissipates, −F·(v_cage − v_land) with
+        v_land the guiding race's point under the cage centre, and with land friction the power
+        its film's shear dissipates, T (w_race − w_cage); the power the race puts in through
+        both, T w_race + F·v_land (W)."""
         b = pos.shape[0]
-        details = dict(cage_eccentricity=np.zeros(b), land_friction_loss=np.zeros(b), land_drive_power=np.zeros(b))
+        details = dict(cage_eccentricity=np.zeros(b), land_force_loss=np.zeros(b), land_friction_loss=np.zeros(b),
+                       land_drive_power=np.zeros(b))
         if self.guide is None:
             if self.cage.kind == "rigid":
                 origin, rotation, _, _, _ = self._race_frame("outer", t, pos, vel, rot, omega)
@@ -366,23 +373,29 @@ class BearingConnector(ConnectorDiagnostics):
                     pos[:, self.layout["cage"]], origin, rotation[..., 2]), axis=-1)
             return details
         force, _, e = self.land_force(t, pos, rot, vel, omega)
-        details.update(cage_eccentricity=e, cage_land_force=force)
+        s = self.layout["cage"]
+        origin, _, v_race, w_race, _ = self._race_frame(self.guide[0], t, pos, vel, rot, omega)
+        v_land = v_race + cross(w_race, pos[:, s] - origin)
+        drive = np.einsum("bi,bi->b", force, v_land)
+        details.update(cage_eccentricity=e, cage_land_force=force, land_drive_power=drive,
+                       land_force_loss=-np.einsum("bi,bi->b", force, vel[:, s]) + drive)
         if self.guide[4] > 0:
             torque, axis, w_land = self.land_torque(t, pos, rot, vel, omega, e)
-            slip = w_land - np.einsum("bi,bi->b", omega[:, self.layout["cage"]], axis)
-            details.update(land_friction_loss=torque * slip, land_drive_power=torque * w_land)
+            slip = w_land - np.einsum("bi,bi->b", omega[:, s], axis)
+            details.update(land_friction_loss=torque * slip, land_drive_power=drive + torque * w_land)
         return details
 
     def land_torque(self, t, pos, rot, vel, omega, eccentricity):
         """Friction torque of the guiding land's oil film on the cage about the race axis,
         (B,) N m (MODEL.md §11d; the race takes the opposite), that axis (B, 3) and the land's
         speed about it (B,) rad/s."""
-        race, play, _, _, friction = self.guide
+        race, play, _, _, friction, _, max_ratio = self.guide
         _, rotation, _, w_race, _ = self._race_frame(race, t, pos, vel, rot, omega)
         axis = rotation[..., 2]
         w_cage = np.einsum("bi,bi->b", omega[:, self.layout["cage"]], axis)
         w_land = np.einsum("bi,bi->b", w_race, axis)
-        return cage_physics.land_friction_torque(friction, w_land - w_cage, eccentricity / play), axis, w_land
+        torque = cage_physics.land_friction_torque(friction, w_land - w_cage, eccentricity / play, max_ratio)
+        return torque, axis, w_land
 
     def _add_land_force(self, t, pos, rot, vel, omega, out):
         """Adds the guiding-land force (and the land's friction torque) to the cage slot and

@@ -41,8 +41,9 @@ class ConnectorState:
     cage_velocity: np.ndarray = None  #: its velocity, (3,), m/s
     pocket_friction_force: np.ndarray = None  #: pocket friction on each ball, (Z, 3), N (None: off)
     pocket_friction_loss: float = 0.0  #: power the pocket friction dissipates, W
-    land_friction_loss: float = 0.0  #: power the guiding land's oil film dissipates, W
-    land_drive_power: float = 0.0  #: power the guiding race puts into the cage through that film, W
+    land_force_loss: float = 0.0  #: power the guiding land's force pair (contact, film pressure) dissipates, W
+    land_friction_loss: float = 0.0  #: power the guiding land's oil film dissipates by its shear, W
+    land_drive_power: float = 0.0  #: power the guiding race puts into the cage through its land, W
 
 
 def _take(record, part):
@@ -62,7 +63,8 @@ def per_race(record, b, z):
 #: ConnectorState fields that describe the bearing, not the states
 _FRAME_FIELDS = ("frame_rotation", "frame_origin")
 #: ConnectorState fields that are numbers for one state
-_SCALAR_FIELDS = ("t", "cage_eccentricity", "pocket_friction_loss", "land_friction_loss", "land_drive_power")
+_SCALAR_FIELDS = ("t", "cage_eccentricity", "pocket_friction_loss", "land_force_loss", "land_friction_loss",
+                  "land_drive_power")
 
 
 def first_state(state: ConnectorState) -> ConnectorState:

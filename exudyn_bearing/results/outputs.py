@@ -84,7 +84,7 @@ class BearingResults:
     outer_race_force: np.ndarray = None
     #: rigid cage centre off its guiding race's axis (unguided: the outer race's), (T,), m
     cage_eccentricity: np.ndarray = None
-    #: guiding-land contact force on the cage, magnitude (T,), N
+    #: guiding land's force on the cage (contact and film, MODEL.md §11d), magnitude (T,), N
     cage_land_force: np.ndarray = None
     #: largest traction coefficient |f|/Q of any loaded contact over the run (MODEL.md §8)
     max_traction_coefficient: float = 0.0
@@ -96,9 +96,9 @@ class BearingResults:
     drag_loss: np.ndarray = None
     #: power dissipated in the ball–pocket contacts (pocket damping; springs average out), (T,), W
     cage_loss: np.ndarray = None
-    #: power dissipated at the cage's guiding land, (T,), W (race translation neglected)
+    #: power dissipated at the cage's guiding land (its force pair and its film's shear), (T,), W
     land_loss: np.ndarray = None
-    #: power the guiding race puts into the cage through the land's friction torque, (T,), W
+    #: power the guiding race puts into the cage through its land (film torque and force), (T,), W
     land_drive: np.ndarray = None
 
     def last(self, fraction=1 / 3):
@@ -156,7 +156,7 @@ class BearingResults:
     def drive_power(self) -> np.ndarray:
         """Power the races put into the bearing, (T,), W: -(M_z w) of the balls' moment on each
         race about the bearing axis, plus what a guiding race puts into the cage through its
-        land's friction torque. In a settled run it equals the total of :meth:`power_loss`
+        land (its film's torque and force). In a settled run it equals the total of :meth:`power_loss`
         (energy balance; race translation neglected)."""
         if self.inner_race_moment is None:  # results assembled without the race reactions
             return np.full_like(self.time, np.nan, dtype=float)
@@ -268,8 +268,8 @@ def _body_losses(s) -> tuple:
         v_pocket = s.cage_velocity[:, None] + cross(s.cage_omega[:, None], s.ball_position - s.cage_position[:, None])
         # + the pocket friction's, -F_f . v_t at the contact points (MODEL.md §11d)
         pocket = -np.sum(s.cage_force * (s.ball_velocity - v_pocket), axis=(1, 2)) + s.pocket_friction_loss
-        if s.cage_land_force is not None:  # its contact, and its film's friction (MODEL.md §11d)
-            land = -np.einsum("bi,bi->b", s.cage_land_force, s.cage_velocity) + s.land_friction_loss
+        if s.cage_land_force is not None:  # its force pair, and its film's shear (MODEL.md §11d)
+            land = s.land_force_loss + s.land_friction_loss
     elif s.cage_force is not None:
         pocket = -np.sum(s.cage_force * s.ball_velocity, axis=(1, 2))  # spring chain: balls only
     return drag, pocket, land

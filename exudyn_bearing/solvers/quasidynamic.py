@@ -411,9 +411,10 @@ def _seat_cage(make, point, y, cage, tol, worst, max_rounds=10):
     offset = np.zeros(3)
     play = 0.5 * cage.guide_clearance
     moved = np.inf
+    film = cage.land_film_constant(balance.b, balance.lub)
     for _ in range(max_rounds):
-        pocket = balance.unpack(y / balance.scale)[0]
-        seat = cage.land_seat(-(pocket[:, None] * balance.e_p).sum(axis=0))
+        pocket, _, _, w_c, _ = balance.unpack(y / balance.scale)
+        seat = cage.land_seat(-(pocket[:, None] * balance.e_p).sum(axis=0), film, w_c + balance.land[1])
         move = float(np.linalg.norm(seat - offset))
         if move <= SEAT_TOLERANCE * play:
             return y, worst, None, balance

@@ -50,9 +50,7 @@ def _geometry(setup):
     bearing, cage = setup.bearing, setup.cage
     land = None
     if cage.guided and cage.land_width > 0:
-        side = 1.0 if cage.guidance == "outer" else -1.0
-        radius = cage.land_radius or bearing.pitch_radius + side * bearing.ball_radius
-        land = (cage.guidance, float(radius), float(cage.land_width), 0.5 * float(cage.guide_clearance))
+        land = (cage.guidance, cage.land_radius_for(bearing), float(cage.land_width), 0.5 * float(cage.guide_clearance))
     return setup.thermal.geometry(bearing, cage.mass_for(bearing), land)
 
 
