@@ -74,7 +74,8 @@ def assert_real_png(path, min_bytes=10_000, min_size=(300, 200)):
 
 SIMULATE_KEYS = {"axial", "radial", "rpm", "time", "cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed",
                  "cage_speed_nominal", "settled", "wall_time_s", "steps", "solver", "newton_iterations",
-                 "jacobian_updates", "details", "error_estimate", "power_loss_W", "drive_power_W", "cpu_time_s"}
+                 "jacobian_updates", "details", "error_estimate", "power_loss_W", "drive_power_W", "cpu_time_s",
+                 "call_time_s", "integration_profile"}
 DETAIL_KEYS = {"attitude_yz_deg", "attitude_xz_deg", "max_inner_load", "max_outer_load", "max_inner_slip",
                "max_traction_coefficient"}
 ESTIMATE_KEYS = {"cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
@@ -669,3 +670,24 @@ def test_assumptions_are_stated_where_results_are_read(tmp_path):
     proc, _ = cli("simulate", "--axial", "1300", "--time", "0.002", cwd=tmp_path)
     assert re.search(r"assumptions\s+ball drag C_D 0.5 at oil fraction 1 \(fully flooded\); rolling resistance off; "
                      r"thermal film off", proc.stdout), proc.stdout
+
+
+def test_the_call_says_where_its_time_went_and_profile_splits_the_integration(tmp_path):
+    """``simulate --profile``: the whole call's parts are non-negative and add up to at most the
+    whole; the integration's force evaluations are at least one per Newton iteration (each
+    iteration evaluates the residual) and their time, the Jacobians' and the rest add up to
+    the integration; the text names them. Without ``--profile`` the split is empty."""
+    data, _ = cli_json("simulate", "--axial", 1300, "--time", 0.005, "--profile", cwd=tmp_path)
+    call, prof = data["call_time_s"], data["integration_profile"]
+    parts = [call[k] for k in ("build", "assembly", "integration", "outputs")]
+    assert min(parts) >= 0 and sum(parts) <= call["whole"] + 1e-9 and call["integration"] > 0
+    assert data["units"]["call_time_s"]["whole"] == "s" and data["units"]["integration_profile"]["force_evaluation_us"] == "us"
+    assert prof["steps"] == data["steps"] and prof["force_evaluations"] >= data["newton_iterations"] > 0
+    assert prof["jacobians"] >= 1
+    total = prof["force_evaluations_s"] + prof["jacobians_s"] + prof["exudyn_and_glue_s"]
+    assert total == pytest.approx(call["integration"], rel=1e-9) and prof["exudyn_and_glue_s"] > 0
+    text = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--axial", "1300", "--time", "0.005",
+                           "--profile"], capture_output=True, text=True, cwd=tmp_path)
+    assert text.returncode == 0 and "whole call" in text.stdout and "force evaluations" in text.stdout
+    plain, _ = cli_json("simulate", "--axial", 1300, "--time", 0.005, cwd=tmp_path)
+    assert plain["integration_profile"] == {} and plain["call_time_s"]["whole"] > 0

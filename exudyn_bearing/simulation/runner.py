@@ -21,121 +21,11 @@ from ..races import node_rows
 from ..renamed import accepts_old_names
 from ..results.records import assumptions_record, setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup
+from .profile import EvaluationClock
+from .settings import SOLVERS, SolverSettings  # noqa: F401 (SOLVERS: part of this module's API)
 from .stepping import passage_stepper, solve_with_passages
 
 __all__ = ["SolverSettings", "RunInfo", "BearingSimulationError", "run_solver", "simulate"]
-
-SOLVERS = ("generalized-alpha", "trapezoidal", "rk44", "dopri5")
-
-
-@dataclass(frozen=True)
-class SolverSettings:
-    """Time integration of a bearing model.
-
-    Parameters
-    ----------
-    solver : {'generalized-alpha', 'trapezoidal', 'rk44', 'dopri5'}
-        Exudyn's implicit generalized-alpha (numerical damping ``spectral_radius``), the
-        undamped trapezoidal rule (Newmark, rho_inf = 1), explicit Lie-group RK44 at a
-        fixed step, or adaptive DOPRI5 (``step`` is the initial/maximum step).
-    step : float or None
-        Time step, s. None (default): each bearing's ``RecommendedStep()`` (1e-4 s, less for
-        small balls at high contact stiffness; :mod:`exudyn_bearing.model.steprule`), the smallest.
-    spectral_radius : float
-        rho_inf of generalized-alpha. 0.5 by default: with 0.8 a pure-axial 1 kN run grows a
-        spurious radial oscillation of the free inner race from ~0.2 s (ball orbital speeds
-        spread 33–93 rad/s, balls unloading) and fails near 0.5 s; with 0.5 it stays
-        uniform to 0.7 s at about the same cost (docs/work_precision).
-    relative_tolerance : float
-    absolute_tolerance : float or None
-        Newton (implicit; Exudyn's residual norm relative to the step's initial residual,
-        and in N) or error (DOPRI5) tolerances; Newton stops at whichever it meets first.
-        Relative 1e-4 by default (docs/work_precision, 1.3 kN at 1e-4 s: kinematic cage slip
-        error 2.9e-3 pp at 1e-4 and at 1e-6, the step's error dominates; 430 instead of 611
-        Newton iterations; 1e-3: 2.5e-2 pp). Absolute None (default): for the implicit
-        solvers the smallest ``RecommendedAbsoluteTolerance()`` of the bearings, 3e-5 of
-        their largest contact load (the force law's resolution, MODEL.md §10b), else 1e-6.
-    jacobian : {'block', 'exudyn'}
-        Implicit solvers: the connector's block finite-difference Jacobian or Exudyn's
-        own numerical one.
-    newton_contractivity : float
-        Implicit solvers: modified Newton recomputes the Jacobian when an iteration reduces
-        the residual by less than this factor (Exudyn's ``modifiedNewtonContractivity``).
-    step_recovery_iterations : int
-        Implicit solvers: after a step cut, Exudyn grows the step again only once steps need
-        at most this many Newton iterations (its ``adaptiveStepRecoveryIterations``; Exudyn's
-        default 7). 5: the 40-mm spindle bearing at 1 kN and 4 000 rpm (a thin ester film),
-        whose steps converge at 2e-5 s but not at its default 3.33e-5 s, climbs back to the
-        failing step every 10 steps with 7 (63.9 s wall per 0.1 s) and not with 5 (about
-        12 s); with 4 the deep-groove case at 1 kN radial stays at the halved step after
-        its start transient (2x its steps); docs/DEVELOPMENT.md, 'Solver defaults and the step rule'.
-    predictor : bool
-        Implicit solvers: start each step's Newton iteration from the previous step's
-        acceleration of the bearings' nodes (:mod:`exudyn_bearing.model.predictor`, MODEL.md §10b)
-        instead of Exudyn's zero acceleration. Same convergence test, fewer iterations.
-    progress : bool
-        Print where a run is (simulated time, wall time, time to go) to stderr every
-        :data:`PROGRESS_PERIOD` s of wall time; runs shorter than that print nothing.
-    output_step : float
-        Period of the recorded states, s.
-    passage_step : float or None
-        Implicit solvers: the step while a ball passes a race defect, s (``step`` elsewhere;
-        the passage windows are ``run_solver``'s ``windows``; MODEL.md §13c). None: ``step``
-        throughout.
-    """
-
-    solver: str = "generalized-alpha"
-    step: float | None = None
-    spectral_radius: float = 0.5
-    relative_tolerance: float = 1e-4
-    absolute_tolerance: float | None = None
-    jacobian: str = "block"
-    output_step: float = 1e-4
-    newton_contractivity: float = 0.5
-    step_recovery_iterations: int = 5
-    predictor: bool = True
-    progress: bool = True
-    passage_step: float | None = None
-
-    def __post_init__(self) -> None:
-        if self.solver not in SOLVERS:
-            raise ValueError(f"solver must be one of {SOLVERS}, got {self.solver!r}")
-        for name in ("step", "relative_tolerance", "absolute_tolerance", "output_step", "passage_step"):
-            value = getattr(self, name)
-            if name in ("step", "absolute_tolerance", "passage_step") and value is None:
-                continue
-            if not (math.isfinite(value) and value > 0):
-                raise ValueError(f"{name} must be positive, got {value!r}")
-        if not 0.0 <= self.spectral_radius <= 1.0:
-            raise ValueError(f"spectral_radius must lie in [0, 1], got {self.spectral_radius!r}")
-        if not 0.0 < self.newton_contractivity < 1.0:
-            raise ValueError(f"newton_contractivity must lie in (0, 1), got {self.newton_contractivity!r}")
-        if self.jacobian not in ("block", "exudyn"):
-            raise ValueError(f"jacobian must be 'block' or 'exudyn', got {self.jacobian!r}")
-        if isinstance(self.step_recovery_iterations, bool) or not (
-                isinstance(self.step_recovery_iterations, int) and self.step_recovery_iterations >= 1):
-            raise ValueError(f"step_recovery_iterations must be an integer >= 1, got {self.step_recovery_iterations!r}")
-
-    def resolved(self, handles) -> "SolverSettings":
-        """These settings with ``step`` None replaced by the smallest ``RecommendedStep()``
-        of the bearing ``handles`` (1e-4 s without any), and ``absolute_tolerance`` None by
-        the smallest ``RecommendedAbsoluteTolerance()`` (implicit solvers; else 1e-6)."""
-        from ..model.steprule import MIN_ABSOLUTE_TOLERANCE, NOMINAL_STEP
-
-        settings = self
-        if settings.step is None:
-            steps = [h.RecommendedStep() for h in handles if hasattr(h, "RecommendedStep")]
-            settings = replace(settings, step=min(steps, default=NOMINAL_STEP))
-        if settings.absolute_tolerance is None:
-            tolerances = [h.RecommendedAbsoluteTolerance() for h in handles
-                          if settings.implicit and hasattr(h, "RecommendedAbsoluteTolerance")]
-            settings = replace(settings, absolute_tolerance=min(tolerances, default=MIN_ABSOLUTE_TOLERANCE))
-        return settings
-
-    @property
-    def implicit(self) -> bool:
-        return self.solver in ("generalized-alpha", "trapezoidal")
-
 
 #: exceptions that mean a bug, passed on as they are instead of being reported as a solver
 #: failure with solver advice (Exudyn wraps a user function's own exception in a ModelError
@@ -414,6 +304,14 @@ class SimulationSummary:
     #: the physics choices behind the numbers: drag oil fraction, rolling resistance, thermal
     #: film, traction law (:func:`exudyn_bearing.results.records.assumptions_record`)
     assumptions: dict = field(default_factory=dict)
+    #: where the whole call's wall time went, s: 'build' (the model with its quasi-static and
+    #: steady or quasi-dynamic start), 'assembly', 'integration', 'outputs' (the results from
+    #: the recorded states and their summary), 'whole' (the call, the error estimate's rerun
+    #: included)
+    call_time_s: dict = field(default_factory=dict)
+    #: with ``profile``: the integration's force evaluations and Jacobians (counts, s), the
+    #: rest (Exudyn's own work and the glue around them, s); else empty
+    integration_profile: dict = field(default_factory=dict)
 
     def to_dict(self) -> dict:
         """JSON-ready: the fields (not the results object), ``units`` (the unit of every key)
@@ -436,7 +334,7 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
              axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
              settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FROM_SETUP,
              contact_law: ContactLaw = FROM_SETUP, cage: CageModel = FROM_SETUP, surface=FROM_SETUP,
-             error_estimate: bool = False, initial_state: str = "auto") -> SimulationSummary:
+             error_estimate: bool = False, initial_state: str = "auto", profile: bool = False) -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
 
@@ -449,13 +347,17 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     :class:`~exudyn_bearing.setup.BearingSetup` or a bearing file's path: all its parts are
     used — lubricant, ball drag, cage, contact law, surfaces (defects and waviness, MODEL.md
     §13; the step then also resolves the defect passages, ``RecommendedSurfaceStep``) and
-    housing (the outer race on it, §13a) — each unless passed explicitly.
+    housing (the outer race on it, §13a) — each unless passed explicitly. The summary's
+    ``call_time_s`` says where the call's time went; with ``profile`` its
+    ``integration_profile`` splits the integration (a timer around each force evaluation and
+    Jacobian, ~1 us each).
     """
     import exudyn as exu
 
     from ..model.builder import CreateAngularContactBearing
     from ..races import Driven
 
+    called = _time.perf_counter()
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law, cage=cage,
                      surface=surface)
     if not (math.isfinite(time) and time > 0):
@@ -465,10 +367,17 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     # (outer race: the builder's default, the setup's housing or a fixed race)
     handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), axialForce=axial_force,
                                          radialForce=radial_force, initialState=initial_state, show=False)
+    clock = EvaluationClock(handle.connector) if profile else None
+    built = _time.perf_counter()
     mbs.Assemble()
+    assembled = _time.perf_counter()
     info = run_solver(mbs, [handle], time, with_surface_step(settings, handle, rpm))
+    integrated = _time.perf_counter()
     results = handle.Results(mbs)
     summary = results.summary()
+    done = _time.perf_counter()
+    call = {"build": built - called, "assembly": assembled - built, "integration": integrated - assembled,
+            "outputs": done - integrated}
     estimate = None
     if error_estimate:
         finer = replace(settings, step=0.5 * info.solver["step"], output_step=settings.output_step,
@@ -483,6 +392,7 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
         estimate = {"method": "rerun at half the step (and half the tolerances)", "reference_step": finer.step,
                     "reference_wall_time_s": ref.wall_time_s}
         estimate.update({k: abs(float(summary[k]) - float(other[k])) for k in keys})
+    call["whole"] = _time.perf_counter() - called
     return SimulationSummary(axial_force, radial_force, rpm, time, summary["kinematic_cage_slip_percent"],
                              summary["cage_slip_percent"], summary["cage_speed"],
                              summary["cage_speed_nominal"], summary["settled"], info.wall_time_s, info.steps,
@@ -492,4 +402,6 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
                              setup_inputs(setup, initial_state=initial_state),
-                             info.cpu_time_s, assumptions_record(setup.drag, setup.contact_law, setup.lubricant))
+                             info.cpu_time_s, assumptions_record(setup.drag, setup.contact_law, setup.lubricant),
+                             call, {} if clock is None else clock.split(info.steps, call["integration"]))
+

@@ -88,7 +88,8 @@ def _simulate(args) -> int:
     settings = SolverSettings(solver=args.solver, step=args.step,
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
-                       settings=settings, error_estimate=args.error_estimate, initial_state=args.start)
+                       settings=settings, error_estimate=args.error_estimate, initial_state=args.start,
+                       profile=args.profile)
     data = summary.to_dict()
     if args.plot:
         from ..results.plots import plot_run
@@ -122,6 +123,15 @@ def _simulate(args) -> int:
     print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
           f"{data['newton_iterations']} Newton iterations, {data['jacobian_updates']} Jacobian updates, "
           f"wall time {data['wall_time_s']:.1f} s")
+    call = data["call_time_s"]
+    print(f"  whole call {call['whole']:.2f} s: build {call['build']:.2f} (model, start), assembly "
+          f"{call['assembly']:.2f}, integration {call['integration']:.2f}, outputs {call['outputs']:.2f} s")
+    prof = data["integration_profile"]
+    if prof:
+        print(f"    integration: {prof['force_evaluations']} force evaluations ({prof['force_evaluations_per_step']:.1f} "
+              f"a step, {prof['force_evaluation_us']:.0f} us each) {prof['force_evaluations_s']:.2f} s, "
+              f"{prof['jacobians']} Jacobians ({prof['jacobian_ms']:.2f} ms each) {prof['jacobians_s']:.2f} s, "
+              f"Exudyn's own work and glue {prof['exudyn_and_glue_s']:.2f} s")
     est = data.get("error_estimate")
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")

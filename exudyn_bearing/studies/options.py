@@ -98,6 +98,8 @@ def _simulate_options(p) -> None:
                    help="start state: steady (axial: the steady state; combined load: every ball's own balance, "
                         "MODEL.md §12a), rolling (pure rolling), auto (steady where it applies, else rolling)")
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
+    p.add_argument("--profile", action="store_true",
+                   help="split the integration's time: force evaluations, Jacobians, Exudyn's own work and glue")
 
 
 def _steady_options(p) -> None:
