@@ -13,48 +13,19 @@ The phases are timed by wrapping the package's own functions in this process (no
 overhead would bend the shares); what is not wrapped is in "rest".
 """
 import argparse
-import time
-from contextlib import contextmanager
 
 import exudyn as exu
 
 import exudyn_bearing.model.builder as builder
 import exudyn_bearing.model.start_state as start_module
 from exudyn_bearing import SolverSettings, races
+from exudyn_bearing.simulation.profile import Clock
 from exudyn_bearing.simulation.runner import run_solver, with_surface_step
 from exudyn_bearing.setup import BearingSetup
 from exudyn_bearing.presets import REFERENCE_BEARING
 
 CASES = {"a": ("reference, 1.3 kN axial, 1800 rpm", 1300.0, 0.0, 1800.0),
          "b": ("reference, 2.2 kN + 2 kN radial, 1800 rpm", 2200.0, 2000.0, 1800.0)}
-
-
-class Clock:
-    """Seconds and calls per name."""
-
-    def __init__(self):
-        self.seconds, self.calls = {}, {}
-
-    @contextmanager
-    def phase(self, name):
-        start = time.perf_counter()
-        try:
-            yield
-        finally:
-            self.add(name, time.perf_counter() - start)
-
-    def add(self, name, seconds):
-        self.seconds[name] = self.seconds.get(name, 0.0) + seconds
-        self.calls[name] = self.calls.get(name, 0) + 1
-
-    def wrap(self, name, function):
-        def timed(*args, **kw):
-            start = time.perf_counter()
-            try:
-                return function(*args, **kw)
-            finally:
-                self.add(name, time.perf_counter() - start)
-        return timed
 
 
 def one_call(axial, radial, rpm, sim_time, clock):

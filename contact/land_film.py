@@ -21,9 +21,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .kinematics import cross
-
-__all__ = ["LAND_FILM_MAX_RATIO", "film_constant", "short_bearing_force", "land_film_forces", "steady_eccentricity"]
+__all__ = ["LAND_FILM_MAX_RATIO", "film_constant", "short_bearing_force", "film_force_vector", "land_film_forces",
+           "steady_eccentricity"]
 
 #: ε beyond which the film's force stays at its value there (a numerical guard: the film
 #: force diverges as ε -> 1; past the play the land's contact spring takes over)
@@ -50,22 +49,38 @@ def short_bearing_force(eps, radial_rate, whirl_rate, spin_sum, constant, max_ra
     return f_r, f_t
 
 
+@njit(cache=True, error_model="numpy")
+def film_force_vector(offset, rate, axis, spin_sum, constant, radial_clearance, max_ratio):
+    """The film's force (3-tuple, N) on the cage of one state: :func:`short_bearing_force` turned
+    to the unit offset n (tuples of 3: ``offset`` e m, its ``rate`` m/s, the unit ``axis``); the
+    rate's axial part dropped. At e = 0, n is the rate's direction (the film then damps:
+    −K π ė / (2c))."""
+    a0, a1, a2 = axis
+    v0, v1, v2 = rate
+    va = v0 * a0 + v1 * a1 + v2 * a2  # the rate in the bearing plane
+    v0, v1, v2 = v0 - va * a0, v1 - va * a1, v2 - va * a2
+    e = math.sqrt(offset[0] * offset[0] + offset[1] * offset[1] + offset[2] * offset[2])
+    if e > 1e-12 * radial_clearance:
+        n0, n1, n2 = offset[0] / e, offset[1] / e, offset[2] / e
+    else:  # centred: the film damps along the motion
+        size = max(math.sqrt(v0 * v0 + v1 * v1 + v2 * v2), 1e-300)
+        n0, n1, n2 = v0 / size, v1 / size, v2 / size
+    t0, t1, t2 = a1 * n2 - a2 * n1, a2 * n0 - a0 * n2, a0 * n1 - a1 * n0
+    f_r, f_t = short_bearing_force(e / radial_clearance, (v0 * n0 + v1 * n1 + v2 * n2) / radial_clearance,
+                                   (v0 * t0 + v1 * t1 + v2 * t2) / radial_clearance, spin_sum, constant, max_ratio)
+    return -f_r * n0 + f_t * t0, -f_r * n1 + f_t * t1, -f_r * n2 + f_t * t2
+
+
 def land_film_forces(offset, offset_rate, axis, spin_sum, constant, radial_clearance, max_ratio=LAND_FILM_MAX_RATIO):
     """The film's force on the cage, (B, 3) N, from its radial ``offset`` e (B, 3) m and its
-    rate (B, 3) m/s (both in the bearing plane), the unit ``axis`` (B, 3), ``spin_sum``
-    ω_cage + ω_land (B,) rad/s, K (N s) and c (m); :func:`short_bearing_force` per state.
-    At e = 0 the unit n is the offset rate's direction (the film then damps: −K π ė / (2c))."""
+    rate (B, 3) m/s, the unit ``axis`` (B, 3), ``spin_sum`` ω_cage + ω_land (B,) rad/s, K (N s)
+    and c (m): :func:`film_force_vector` per state."""
     offset, offset_rate, axis = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (offset, offset_rate, axis))
     spin_sum = np.broadcast_to(np.asarray(spin_sum, dtype=float), offset.shape[:1])
     force = np.zeros_like(offset)
     for b in range(offset.shape[0]):
-        e = float(np.linalg.norm(offset[b]))
-        n = offset[b] / e if e > 1e-12 * radial_clearance else offset_rate[b] / max(np.linalg.norm(offset_rate[b]), 1e-300)
-        t = cross(axis[b], n)
-        f_r, f_t = short_bearing_force(e / radial_clearance, float(offset_rate[b] @ n) / radial_clearance,
-                                       float(offset_rate[b] @ t) / radial_clearance, float(spin_sum[b]), constant,
-                                       max_ratio)
-        force[b] = -f_r * n + f_t * t
+        force[b] = film_force_vector(tuple(offset[b]), tuple(offset_rate[b]), tuple(axis[b]), float(spin_sum[b]),
+                                     constant, radial_clearance, max_ratio)
     return force
 
 

@@ -10,7 +10,7 @@ import numpy as np
 from numba import njit
 
 from ..cage import LAND_DAMPING_DEPTH
-from ..land_film import LAND_FILM_MAX_RATIO, short_bearing_force
+from ..land_film import LAND_FILM_MAX_RATIO, film_force_vector
 
 __all__ = ["cage_and_drag", "land_forces", "pocket_friction"]
 
@@ -39,27 +39,13 @@ def land_forces(cage_o, cage_v, race_o, race_v, axis, play, stiffness, damping, 
             magnitude = max(stiffness * (e - play) + damping * u * u * (3.0 - 2.0 * u) * e_dot, 0.0)
             force[b, 0], force[b, 1], force[b, 2] = -magnitude * n0, -magnitude * n1, -magnitude * n2
         if film > 0.0:
-            _add_film(b, r, (e0, e1, e2), e, cage_v, race_v, axis, play, film, spin_sum[b], force)
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def _add_film(b, r, offset, e, cage_v, race_v, axis, play, film, spin_sum, force):
-    """Adds the short-bearing film's force of state ``b`` to ``force`` (contact.land_film)."""
-    a0, a1, a2 = axis[r, 0], axis[r, 1], axis[r, 2]
-    v0, v1, v2 = cage_v[b, 0] - race_v[r, 0], cage_v[b, 1] - race_v[r, 1], cage_v[b, 2] - race_v[r, 2]
-    va = v0 * a0 + v1 * a1 + v2 * a2  # the rate in the bearing plane
-    v0, v1, v2 = v0 - va * a0, v1 - va * a1, v2 - va * a2
-    if e > 1e-12 * play:
-        n0, n1, n2 = offset[0] / e, offset[1] / e, offset[2] / e
-    else:  # centred: the film damps along the motion
-        size = max(math.sqrt(v0 * v0 + v1 * v1 + v2 * v2), 1e-300)
-        n0, n1, n2 = v0 / size, v1 / size, v2 / size
-    t0, t1, t2 = a1 * n2 - a2 * n1, a2 * n0 - a0 * n2, a0 * n1 - a1 * n0
-    f_r, f_t = short_bearing_force(e / play, (v0 * n0 + v1 * n1 + v2 * n2) / play, (v0 * t0 + v1 * t1 + v2 * t2) / play,
-                                   spin_sum, film, LAND_FILM_MAX_RATIO)
-    force[b, 0] += -f_r * n0 + f_t * t0
-    force[b, 1] += -f_r * n1 + f_t * t1
-    force[b, 2] += -f_r * n2 + f_t * t2
+            f0, f1, f2 = film_force_vector((e0, e1, e2), (cage_v[b, 0] - race_v[r, 0], cage_v[b, 1] - race_v[r, 1],
+                                                          cage_v[b, 2] - race_v[r, 2]),
+                                           (axis[r, 0], axis[r, 1], axis[r, 2]), spin_sum[b], film, play,
+                                           LAND_FILM_MAX_RATIO)
+            force[b, 0] += f0
+            force[b, 1] += f1
+            force[b, 2] += f2
 
 
 @njit(cache=True, error_model="numpy")
