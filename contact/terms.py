@@ -214,11 +214,12 @@ def ball_surface_height(terms, ball, race, rotation, normal, rolling, transverse
 
 
 @njit(cache=True, error_model="numpy")
-def film_factor(terms, cs):
-    """Stage 1: the factor on the isothermal film thickness of contact ``cs``."""
+def film_factor(terms, cs, heating):
+    """Stage 1: the factor on the isothermal film thickness of contact ``cs``; ``heating`` the
+    contact's oil's c_ηT / K_c (m/W; ``terms.heating`` where one oil serves all contacts, 0: off)."""
     phi = 1.0
-    if terms.heating > 0.0 and cs.entrainment != 0.0:  # inlet shear heating (MODEL.md §11e)
-        phi = thermal_film_factor(cs.entrainment, cs.slip, cs.max_pressure, cs.e_prime, cs.viscosity, terms.heating,
+    if heating > 0.0 and cs.entrainment != 0.0:  # inlet shear heating (MODEL.md §11e)
+        phi = thermal_film_factor(cs.entrainment, cs.slip, cs.max_pressure, cs.e_prime, cs.viscosity, heating,
                                   THERMAL_FLOOR)
     return _registered_film(terms.registered, cs, phi)
 
@@ -242,7 +243,7 @@ def _contact_terms(terms, state, out):
         cs = ContactState(state.load[i], state.a[i], state.b[i], state.max_pressure[i], state.film[i], state.r_x[i],
                           state.r_y[i], state.slip[i], state.entrainment[i], state.rolling_rate[i],
                           state.ball_radius[i], state.e_prime[i], state.viscosity[i])
-        phi = film_factor(terms, cs)
+        phi = film_factor(terms, cs, terms.heating)
         out[0, i] = phi
         out[1, i], out[2, i] = contact_loads(terms, cs, phi)
 

@@ -7,7 +7,7 @@ Both force paths (the numpy functions of :mod:`contact` and the compiled kernels
 law differently: the groove geometry and the numpy path's :class:`~contact.ballrace.RaceContact`,
 the per-contact terms (:class:`~contact.terms.TermRecord`, with the surface), and the
 compiled path's :class:`~contact.kernels.records.RaceGeometry` and
-:class:`~contact.kernels.records.LawRecord`.
+:class:`~contact.kernels.records.LawRecord` (one per race).
 """
 from __future__ import annotations
 
@@ -35,7 +35,9 @@ class ContactRecords(NamedTuple):
     races: RaceContact  #: the numpy path's geometry and material per contact (MODEL.md §2–§3)
     terms: TermRecord  #: the per-contact terms, both paths (:mod:`contact.terms`)
     geometry: RaceGeometry  #: the compiled path's geometry and material of both races
-    law: LawRecord  #: the compiled path's law with its lubricant
+    #: the compiled path's law with its lubricant, per race (inner, outer; one record twice
+    #: where both races see one oil)
+    laws: tuple
 
 
 def contact_records(bearing, lubricant, law: ContactLaw, balls: int | None = None,
@@ -55,8 +57,9 @@ def contact_records(bearing, lubricant, law: ContactLaw, balls: int | None = Non
     geometry = RaceGeometry(np.array([(r_gi, z_gi, tube[0]), (r_go, z_go, tube[1])], dtype=float), conformity,
                             np.array([-1.0, 1.0]), float(bearing.ball_radius), float(bearing.pitch_diameter),
                             float(bearing.effective_modulus), float(bearing.ball_mass))
+    record = law_record(law, lubricant)
     return ContactRecords(tube, grooves, signs, races, term_record(law, lubricant, d, surface), geometry,
-                          law_record(law, lubricant))
+                          (record, record))
 
 
 #: CageModel.kind -> CageRecord.kind

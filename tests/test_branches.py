@@ -185,7 +185,7 @@ def test_barus_cap_compiled_kernel(exponent):
                                      np.array([B.inner_conformity, B.outer_conformity]), np.array([-1.0, 1.0]),
                                      B.ball_radius, B.pitch_diameter, B.effective_modulus, B.ball_mass)
     compiled.race_contacts(compiled.BallStates(c[None], v[None], w[None], np.empty((1, 0, 3, 3))), compiled.RaceFrames(ro, rr, rv, rw),
-                           geometry, compiled.law_record(law, LUB), compiled.crook_tables(law.quadrature_order),
+                           geometry, (compiled.law_record(law, LUB),) * 2, compiled.crook_tables(law.quadrature_order),
                            term_record(law, LUB, B.ball_diameter),
                            compiled.ContactOutputs(force, moment, penetration, load))
     np.testing.assert_allclose(load[0, 0], forces.normal_load, rtol=1e-12)

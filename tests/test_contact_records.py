@@ -112,7 +112,7 @@ def test_solvers_and_connector_read_one_conversion(every_term):
     again = contact_records(con.bearing, con.lubricant, con.law)
     for got, want in zip(con.records.grooves + (con.records.signs,), again.grooves + (again.signs,)):
         np.testing.assert_array_equal(got, want)
-    assert con.records.law == again.law
+    assert con.records.laws == again.laws
     assert con.records.terms.heating == again.terms.heating
     np.testing.assert_array_equal(con.records.geometry.groove, again.geometry.groove)
     one = contact_records(con.bearing, con.lubricant, con.law, balls=1)

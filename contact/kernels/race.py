@@ -20,6 +20,7 @@ from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, ma
 from ..surface import SurfaceRecord
 from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
 from .crook import crook_one
+from .records import LawRecord
 
 __all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
 
@@ -180,7 +181,10 @@ def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, 
     p_max = max_pressure_of(q, sa, sb)
     h = central_film(entrainment, q, r_x, ell, e_prime, eta0, c_p)  # Hamrock–Dowson (P17), floored below
     cs = ContactState(q, sa, sb, p_max, h, r_x, r_y, u_x, entrainment, rolling_rate, ball_radius, e_prime, eta0)
-    phi_t = film_factor(terms, cs)  # the per-contact terms (contact.terms), stage 1
+    # the thermal film factor with the race's own oil: c1_coef = c_ηT / (8 K_c) (MODEL.md §6), so
+    # 8 c1_coef is its c_ηT / K_c (a power-of-two scaling: the same float as terms.heating)
+    heating = 8.0 * law.c1_coef if terms.heating > 0.0 else 0.0
+    phi_t = film_factor(terms, cs, heating)  # the per-contact terms (contact.terms), stage 1
     h = max(phi_t * h, law.min_film)
     fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
     if not law.spin_moment:
@@ -190,12 +194,13 @@ def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, 
 
 
 @njit(cache=True, error_model="numpy")
-def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
+def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out):
     """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
     z = balls.position.shape[1]
     ib = idx // (2 * z)
     k = (idx // z) % 2
     j = idx % z
+    law = laws[k]
     pen, rate, normal, t1, t2, u_x, u_y, spin, entrainment, rolling_rate, tilt, r_x, turn = _contact_kinematics(
         ib, k, j, balls, frames, geometry, terms)
     out.penetration[ib, k, j] = pen
@@ -242,7 +247,7 @@ def _race_contact(idx, balls, frames, geometry, law, tables, terms, out):
 
 
 @njit(cache=True, error_model="numpy")
-def race_contacts(balls, frames, geometry, law, tables, terms, out):
+def race_contacts(balls, frames, geometry, laws, tables, terms, out):
     """Forces of the Z balls of B states against both races (MODEL.md §2–§6).
 
     Parameters
@@ -254,8 +259,10 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
         Origin, rotation (third column: axis), origin velocity and angular velocity of the
         inner (index 0) and outer (1) race frames of each state.
     geometry : RaceGeometry
-    law : LawRecord
-        ``traction`` 0: normal forces only; 1: Crook (fast rule).
+    laws : (LawRecord, LawRecord)
+        The inner (index 0) and outer (1) contacts' law with its race's oil (the same record
+        twice where both races see one oil); ``traction`` 0: normal forces only; 1: Crook
+        (fast rule).
     tables : CrookTables
         :func:`contact.kernels.crook.crook_tables`.
     terms : contact.terms.TermRecord
@@ -265,18 +272,20 @@ def race_contacts(balls, frames, geometry, law, tables, terms, out):
         centre (N m), elastic approach δ (m) and normal load Q (N).
     """
     for idx in range(balls.position.shape[0] * 2 * balls.position.shape[1]):
-        _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
+        _race_contact(idx, balls, frames, geometry, laws, tables, terms, out)
 
 
 @njit(cache=True, error_model="numpy")
-def race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo):
+def race_contacts_at(balls, frames, geometry, laws, tables, terms, out, todo):
     """:func:`race_contacts` for the flat contact indices ``todo`` only (state idx // 2Z, race
     idx // Z % 2, ball idx % Z; int64): the rest of the outputs is left as it is (a Jacobian's
     race columns change one race's contacts only)."""
     for n in range(todo.shape[0]):
-        _race_contact(todo[n], balls, frames, geometry, law, tables, terms, out)
+        _race_contact(todo[n], balls, frames, geometry, laws, tables, terms, out)
 
 
+#: the fields of one race's law in the laws' flat tuple (:func:`race_contacts_parallel`)
+_N_LAW = len(LawRecord._fields)
 #: the surface record's fields come first in the terms' flat tuple (:func:`_flat_terms`)
 _N_SURFACE = len(SurfaceRecord._fields)
 # the flat tuple leaves out the last field, the registered terms (functions); a new field
@@ -292,26 +301,28 @@ def _flat_terms(terms):
 
 
 @njit(cache=True, error_model="numpy")
-def _race_contact_flat(idx, balls, frames, geometry, law, tables, flat, out):
-    """:func:`_race_contact` with the terms rebuilt from :func:`_flat_terms`' tuple."""
+def _race_contact_flat(idx, balls, frames, geometry, flat_laws, tables, flat, out):
+    """:func:`_race_contact` with the two races' laws rebuilt from one flat tuple (inner's
+    fields, then outer's) and the terms from :func:`_flat_terms`' tuple."""
+    laws = (LawRecord(*flat_laws[:_N_LAW]), LawRecord(*flat_laws[_N_LAW:]))
     terms = TermRecord(SurfaceRecord(*flat[:_N_SURFACE]), *flat[_N_SURFACE:], ())
-    _race_contact(idx, balls, frames, geometry, law, tables, terms, out)
+    _race_contact(idx, balls, frames, geometry, laws, tables, terms, out)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def _race_contacts_prange(balls, frames, geometry, law, tables, flat, out, todo):
+def _race_contacts_prange(balls, frames, geometry, laws, tables, flat, out, todo):
     """The contacts ``todo`` on numba's threads (:func:`race_contacts_parallel`)."""
     for n in prange(todo.shape[0]):
-        _race_contact_flat(todo[n], balls, frames, geometry, law, tables, flat, out)
+        _race_contact_flat(todo[n], balls, frames, geometry, laws, tables, flat, out)
 
 
-def race_contacts_parallel(balls, frames, geometry, law, tables, terms, out, todo):
+def race_contacts_parallel(balls, frames, geometry, laws, tables, terms, out, todo):
     """:func:`race_contacts_at` with the contacts ``todo`` spread over numba's threads.
 
-    The terms cross numba's parallel loop as one flat tuple rebuilt per contact by position
+    The two laws and the terms cross numba's parallel loop as flat tuples rebuilt per contact by position
     (:func:`_flat_terms`), never field by field, so no field can be left at its default
     there; registered terms (functions, which cannot cross it) run serially."""
     if len(terms.registered) > 0:
-        race_contacts_at(balls, frames, geometry, law, tables, terms, out, todo)
+        race_contacts_at(balls, frames, geometry, laws, tables, terms, out, todo)
         return
-    _race_contacts_prange(balls, frames, geometry, law, tables, _flat_terms(terms), out, todo)
+    _race_contacts_prange(balls, frames, geometry, (*laws[0], *laws[1]), tables, _flat_terms(terms), out, todo)

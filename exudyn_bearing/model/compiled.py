@@ -166,7 +166,7 @@ class Physics(NamedTuple):
     """Everything :func:`_one_state` computes with that does not change in time."""
 
     geometry: kernels.RaceGeometry
-    law: kernels.LawRecord
+    laws: tuple  #: (inner, outer) kernels.LawRecord: each race's contacts with their oil
     tables: kernels.CrookTables
     terms: TermRecord
     cage: kernels.CageRecord
@@ -190,8 +190,9 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     contact module (DEVELOPMENT.md, 'Numba cache invalidation')."""
     mount = Mount(*mount)
     balls, slots, cage_slot, held = mount.balls, mount.slots, mount.cage_slot, mount.held
-    geometry, law, tables, terms, cage, pocket, guide = physics
-    geometry, law, tables = kernels.RaceGeometry(*geometry), kernels.LawRecord(*law), kernels.CrookTables(*tables)
+    geometry, laws, tables, terms, cage, pocket, guide = physics
+    geometry, tables = kernels.RaceGeometry(*geometry), kernels.CrookTables(*tables)
+    laws = (kernels.LawRecord(*laws[0]), kernels.LawRecord(*laws[1]))
     terms, cage = terms_from_plain(terms), kernels.CageRecord(*cage)
     pocket_mu, pocket_slip = pocket
     guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, guide_film, guide_max_ratio = guide
@@ -232,7 +233,7 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     for j in range(zr):
         a[0, j] = rot[0, balls[j]]
     balls_now = kernels.BallStates(c, v, w, a)
-    kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, law, tables, terms,
+    kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, laws, tables, terms,
                           kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z)))
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
@@ -321,7 +322,7 @@ class CompiledForces:
         if con.guide is not None:
             guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
         records = con.records
-        self.physics = Physics(records.geometry, records.law, kernels.crook_tables(law.quadrature_order),
+        self.physics = Physics(records.geometry, records.laws, kernels.crook_tables(law.quadrature_order),
                                records.terms, cage, pocket, guide)
         held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
@@ -333,7 +334,7 @@ class CompiledForces:
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._mount_tuple = tuple(self.mount)
         self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
-                                    else x for x in self.physics)
+                                    else x for x in self.physics._replace(laws=tuple(tuple(r) for r in records.laws)))
         self._work = {}
         self._patterns = {}
         self.material = con.terms.surface.material  # a ball's own surface: the contacts read the balls' rotations
@@ -426,7 +427,7 @@ class CompiledForces:
         balls = kernels.BallStates(*(np.take(x, self.balls, axis=1) for x in (pos, vel, omega)),
                                    np.take(rot, self.balls, axis=1) if self.material else self._no_rotation(bsz))
         ph = self.physics
-        args = (balls, frames, ph.geometry, ph.law, ph.tables, ph.terms,
+        args = (balls, frames, ph.geometry, ph.laws, ph.tables, ph.terms,
                 kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
