@@ -7,7 +7,7 @@ its centre, (p - c) x F + M_z n. The race receives -F at p and -M_z n.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -329,3 +329,34 @@ def with_surface(kin: ContactKinematics, terms, race, ball, ball_diameter, pitch
         tilt = tilt - np.einsum("ij,ij->i", turn, race_axis) / kin.orbit_radius
     return replace(kin, penetration=kin.penetration + h, penetration_rate=rate, surface_slope=tilt,
                    surface_turn=turn)
+
+
+def _contacts_where(record, mask, n):
+    """``record`` (a dataclass of per-contact arrays of length ``n`` and scalars) for the
+    contacts ``mask`` only."""
+    return replace(record, **{f.name: value[mask] for f in fields(record)
+                              if isinstance(value := getattr(record, f.name), np.ndarray)
+                              and value.shape[:1] == (n,)})
+
+
+def ball_race_forces_by_race(kin: ContactKinematics, params: RaceContact, lubricants: tuple, law: ContactLaw,
+                             terms: tuple, compiled: bool = False) -> ContactForces:
+    """:func:`ball_race_forces` with each race's contacts (``params.race`` −1 inner, +1 outer)
+    in its own oil: ``lubricants`` and ``terms`` (inner, outer), e.g. the thermal network's
+    contact oils (MODEL.md §14b)."""
+    n = kin.penetration.shape[0]
+    inner = np.asarray(params.race) < 0
+    parts = [(mask, ball_race_forces(_contacts_where(kin, mask, n), _contacts_where(params, mask, n), lub, law,
+                                     term, compiled=compiled))
+             for mask, lub, term in zip((inner, ~inner), lubricants, terms) if np.any(mask)]
+    merged = {}
+    for f in fields(ContactForces):
+        values = [getattr(part, f.name) for _, part in parts]
+        if all(v is None for v in values):
+            merged[f.name] = None
+            continue
+        out = np.zeros((n, *np.shape(values[0])[1:]))
+        for (mask, _), value in zip(parts, values):
+            out[mask] = value
+        merged[f.name] = out
+    return ContactForces(**merged)

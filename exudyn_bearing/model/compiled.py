@@ -318,12 +318,8 @@ class CompiledForces:
         self.cage_slot = con.layout["cage"] if cage_kind == 1 else -1
         # ball–pocket friction (MODEL.md §11d): (mu, slip scale m/s); mu 0: none
         pocket = (float(con.cage.pocket_friction) if cage_kind == 1 else 0.0, float(con.cage.pocket_slip_scale))
-        guide = Guide(-1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.95)
-        if con.guide is not None:
-            guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
-        records = con.records
-        self.physics = Physics(records.geometry, records.laws, kernels.crook_tables(law.quadrature_order),
-                               records.terms, cage, pocket, guide)
+        self._tables, self._pocket = kernels.crook_tables(law.quadrature_order), pocket
+        self.set_physics()
         held = np.zeros(con.n_nodes, dtype=np.int64)
         for slot, what in con.held.items():
             held[slot] = HELD_ALL if what == "all" else HELD_ROTATION
@@ -333,8 +329,6 @@ class CompiledForces:
                            held)
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._mount_tuple = tuple(self.mount)
-        self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
-                                    else x for x in self.physics._replace(laws=tuple(tuple(r) for r in records.laws)))
         self._work = {}
         self._patterns = {}
         self.material = con.terms.surface.material  # a ball's own surface: the contacts read the balls' rotations
@@ -358,6 +352,20 @@ class CompiledForces:
         self.single(0.0, q.ravel(), np.zeros(6 * n), np.zeros(6 * n))
         kernels.rotation_matrices(np.zeros((1, 3)))
         self._time_inputs = ((math.nan, None),)  # the warm-up's t = 0 inputs are not the scene's
+
+    def set_physics(self):
+        """(Re)reads the connector's records and land into :class:`Physics` (at the start, and
+        when :meth:`~exudyn_bearing.model.connector.BearingConnector.set_oils` changes an oil)."""
+        con = self.con
+        guide = Guide(-1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.95)
+        if con.guide is not None:
+            guide = Guide(("inner", "outer").index(con.guide[0]), *(float(x) for x in con.guide[1:]))
+        records = con.records
+        self.physics = Physics(records.geometry, records.laws, self._tables, records.terms, con.cage_record,
+                               self._pocket, guide)
+        # plain tuples for the one-state kernel: numba types them in its C fast path
+        self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
+                                    else x for x in self.physics._replace(laws=tuple(tuple(r) for r in records.laws)))
 
     def fixed_omega(self, t):
         """Angular velocities (2, 3) of the kinematic races (zero rows for races on a node)."""

@@ -12,7 +12,9 @@ from dataclasses import replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import ball_race_forces, with_surface
+from contact.ballrace import ball_race_forces, ball_race_forces_by_race, with_surface
+from contact.kernels.records import law_record
+from contact.lubricant import Lubricant
 from contact.kinematics import ball_race_kinematics, cross, rotation_matrices
 from contact.surface import surface_record
 from ..cage import CageModel
@@ -98,6 +100,9 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         #: the cage and drag as both paths read them (:func:`exudyn_bearing.contact_records.cage_record`)
         self.cage_record = cage_record(setup, self.axis, self.origin)
         self.pocket_angles, self.cage_damping = self.cage_record.pocket_angles, self.cage_record.damping
+        #: the inner contacts', outer contacts' and cage land's lubricant (:meth:`set_oils`)
+        self.oils = (lubricant, lubricant, lubricant)
+        self._race_terms = (self.terms, self.terms)
         self.guide = land_guide(bearing, lubricant, cage)
         self.reference = np.zeros(6 * self.n_nodes)  # set by the builder after Assemble
         self.first_non_finite = None  # diagnosis of the first blown-up state, if any
@@ -116,6 +121,24 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                 self._land_kernel = compiled.kernels.land_forces
             else:
                 say_numpy_path(law)
+
+    def set_oils(self, inner, outer, land=None):
+        """From now on each race's contacts take their own lubricant, ``inner`` and ``outer``
+        (:class:`contact.lubricant.Lubricant`), and the cage's land ``land`` (None: the
+        setup's), e.g. the thermal network's contact oils at the node temperatures (MODEL.md
+        §14b); both force paths and the outputs follow."""
+        land = self.lubricant if land is None else land
+        for name, oil in (("inner", inner), ("outer", outer), ("land", land)):
+            if not isinstance(oil, Lubricant):
+                raise ValueError(f"set_oils: {name} must be a contact.lubricant.Lubricant, got {oil!r}")
+        self.oils = (inner, outer, land)
+        heated = self.terms.heating > 0.0  # the thermal film factor reads each oil's c_etaT / K_c
+        self._race_terms = tuple(self.terms._replace(heating=oil.shear_heating) if heated else self.terms
+                                 for oil in (inner, outer))
+        self.records = self.records._replace(laws=(law_record(self.law, inner), law_record(self.law, outer)))
+        self.guide = land_guide(self.bearing, land, self.cage)
+        if self._compiled is not None:
+            self._compiled.set_physics()
 
     # -- state of a race frame ---------------------------------------------------------
     def _race_frame(self, name, t, pos, vel, rot, omega):
@@ -378,7 +401,12 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                             race_omega=stacked(frames, 3, (3,), bsz, z))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
                                    self.bearing.ball_diameter, self.bearing.pitch_diameter, **pits)
-        frc_all = ball_race_forces(kin_all, params, self.lubricant, self.law, self.terms, compiled=compiled)
+        if self.oils[0] is self.oils[1]:
+            frc_all = ball_race_forces(kin_all, params, self.oils[0], self.law, self._race_terms[0],
+                                       compiled=compiled)
+        else:
+            frc_all = ball_race_forces_by_race(kin_all, params, self.oils[:2], self.law, self._race_terms,
+                                               compiled=compiled)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)
         for k, name in enumerate(("inner", "outer")):
