@@ -27,7 +27,7 @@ from contact.surface import SurfaceModel, surface_record
 from ..bearing import BallDrag, Bearing
 from ..bearingfile import as_setup
 from ..errors import SurfaceStartWarning
-from ..setup import FROM_SETUP, BearingSetup, refuse_thermal
+from ..setup import FROM_SETUP, BearingSetup
 from ..presets import REFERENCE_BEARING
 from ..races import Race, move_body
 from ..solvers.surface_start import surface_start
@@ -38,6 +38,7 @@ from .handle import SENSOR_LABELS, SENSOR_OUTPUTS, BearingHandle  # noqa: F401 (
 from .predictor import install_predictor
 from .sensors import add_state_sensor
 from .start_state import race_pose, start_state
+from .thermal_nodes import UPDATE_PERIOD, BearingTemperatures, thermal_start
 
 __all__ = ["CreateAngularContactBearing", "BearingHandle"]
 
@@ -92,6 +93,7 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
                                 ballDrag: BallDrag | None = FROM_SETUP, surface: SurfaceModel = FROM_SETUP,
                                 innerRaceDisplacement=None,
                                 initialControl: str = "auto", initialState: str = "auto",
+                                initialTemperatures: str = "auto", thermalUpdatePeriod: float = UPDATE_PERIOD,
                                 recordStates: bool = True, show: bool = True) -> BearingHandle:
     """Add an angular-contact ball bearing (Z ball bodies, races, cage, one contact
     connector) to ``mbs`` and return its :class:`BearingHandle`.
@@ -167,6 +169,17 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
         (default): 'steady' where it applies (``Driven``/``Free`` inner race, no
         ``innerRaceDisplacement``, a load, the solve converged within
         ``start.AUTO_CONTINUATION_STEPS`` radial-load steps), else 'rolling'.
+    initialTemperatures : {'auto', 'steady', 'inlet'}
+        With a setup's ``thermal`` model (MODEL.md §14g; else unused): the thermal network's
+        node temperatures are first-order states of the solve, its heat the current state's
+        losses, each contact's oil at its race's and the balls' temperatures. 'steady': the
+        run starts from the thermal steady state (:func:`exudyn_bearing.steady_state`, pure
+        constant axial load) — temperatures, grown bearing and rolling state; 'inlet': every
+        node at the oil inlet's temperature, the bearing grown to it; 'auto': 'steady' where
+        it applies and converges, else 'inlet'.
+    thermalUpdatePeriod : float
+        Simulated time between two updates of the nodes' heat, the network's conductances
+        and the contacts' oils, s (default :data:`~exudyn_bearing.model.thermal_nodes.UPDATE_PERIOD`).
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
         which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
@@ -184,7 +197,6 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
     if surface is None:
         surface = SurfaceModel()
     setup = as_setup(bearing, lubricant=lubricant, contact_law=contactLaw, cage=cage, drag=ballDrag, surface=surface)
-    refuse_thermal(setup, "CreateAngularContactBearing (the dynamic model)")
     bearing = setup.bearing
     surface_record(setup.surface, bearing)  # its checks against this bearing's geometry, before mbs is touched
     inner, outer = check_races(mbs, innerRace, outerRace, setup)
@@ -201,9 +213,16 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
     shift = check_displacement(innerRaceDisplacement, inner, loaded)
     if shift is not None:
         relative[:3] = shift
-    start = start_state(setup, inner, relative, speeds, axial=axial, radial=radial, loaded=loaded,
+    heat_start, start_setup = None, setup
+    if setup.thermal is not None:  # the bearing at its start temperatures (MODEL.md §14g)
+        heat_start = thermal_start(setup, initialTemperatures, axial=axial, radial=radial,
+                                   constant_load=not (callable(axialForce) or callable(radialForce)) and shift is None
+                                   and start_load is None, rpm_i=speeds[0] * 30 / np.pi, rpm_o=speeds[1] * 30 / np.pi,
+                                   inner_kind=inner.kind, initial_state=initialState)
+        setup, start_setup, bearing = heat_start.setup, heat_start.start_setup, heat_start.setup.bearing
+    start = start_state(start_setup, inner, relative, speeds, axial=axial, radial=radial, loaded=loaded,
                         start_load=start_load, displaced=shift is not None, initial_control=initialControl,
-                        initial_state=initialState)
+                        initial_state=initialState, steady=None if heat_start is None else heat_start.steady)
     if start_load is not None:  # the user's body to where the start state has its race
         move_body(mbs, mbs.GetObject(inner.body)["nodeNumber"], frame @ (start.relative[:3] - start.where[:3]))
 
@@ -222,9 +241,12 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
                                  driven=driven, ball_circles=_ball_circles(frame, start))
     contact = _add_connector(mbs, connector, nodes, layout, inner, held, steady=start.steady is not None)
     sensor = add_state_sensor(mbs, nodes, connector) if recordStates else None
+    temperatures = None
+    if heat_start is not None:
+        temperatures = BearingTemperatures(mbs, connector, nodes, setup, heat_start, thermalUpdatePeriod)
     return BearingHandle(bearing, ball_bodies, ball_nodes, cage_body, cage_node, race_items["inner"][0],
                          race_items["inner"][1], race_items["outer"][0], race_items["outer"][1], contact, sensor,
-                         connector, nodes, start.loads, start.steady, start.quasi, housing_spring)
+                         connector, nodes, start.loads, start.steady, start.quasi, housing_spring, temperatures)
 
 
 def _add_connector(mbs, connector, nodes, layout, inner, held, steady):

@@ -51,6 +51,9 @@ class BearingHandle:
     initialQuasiDynamicState: object = field(repr=False, default=None)
     #: the housing's spring-damper to ground (``races.Housing`` outer race), else None
     housingSpring: int | None = None
+    #: the thermal network's nodes in the solve (:class:`~exudyn_bearing.model.thermal_nodes.BearingTemperatures`;
+    #: a setup with a ``thermal`` model, MODEL.md §14g), else None
+    temperatures: object = field(repr=False, default=None)
 
     def Inputs(self, **settings) -> dict:
         """What this bearing's results depend on (bearing, lubricant, drag, contact law, cage,

@@ -100,14 +100,15 @@ def _pure_rolling(setup, loaded, axial, radial, relative, speeds, w_i, w_o, init
 
 
 def start_state(setup, inner, relative, speeds_rad, *, axial, radial, loaded, start_load, displaced,
-                initial_control, initial_state) -> StartState:
+                initial_control, initial_state, steady=None) -> StartState:
     """The :class:`StartState` of ``setup`` with the races ``inner`` (a :class:`~exudyn_bearing.races.Race`)
     at ``relative`` ((dx, dy, dz) m, (theta_x, theta_y) rad: the inner race relative to the
     outer one, as :func:`race_pose`), turning at ``speeds_rad`` (inner, outer; rad/s), under
     the forces at t = 0 ``axial`` and ``radial`` (N; a ``start_load`` (axial, radial) in their
     place for a race on the user's body); ``displaced``: the inner race starts displaced
     (``innerRaceDisplacement``). ``initial_control`` and ``initial_state`` as the builder's
-    ``initialControl`` and ``initialState``."""
+    ``initialControl`` and ``initialState``; ``steady``: a steady state solved already (the
+    thermal one, MODEL.md §14g) to start from instead of the start solvers'."""
     bearing, law, cage = setup.bearing, setup.contact_law, setup.cage
     w_i, w_o = speeds_rad
     rpm_i, rpm_o = w_i * 30 / math.pi, w_o * 30 / math.pi
@@ -123,10 +124,11 @@ def start_state(setup, inner, relative, speeds_rad, *, axial, radial, loaded, st
     loads, c_loc, p_out, w_c, omega_loc = _pure_rolling(setup, loaded, axial, radial, relative, speeds, w_i, w_o,
                                                         initial_control, start_load)
     on_body = inner.kind == "body"
-    steady = steady_start(bearing, setup.lubricant, initial_state, axial_force=axial, radial_force=radial,
-                          rpm_i=rpm_i, rpm_o=rpm_o, sense=sense, inner=inner, displaced=displaced,
-                          contact_law=law, ball_drag=setup.drag, cage=cage,
-                          pose=where if on_body and start_load is None else None)
+    if steady is None:
+        steady = steady_start(bearing, setup.lubricant, initial_state, axial_force=axial, radial_force=radial,
+                              rpm_i=rpm_i, rpm_o=rpm_o, sense=sense, inner=inner, displaced=displaced,
+                              contact_law=law, ball_drag=setup.drag, cage=cage,
+                              pose=where if on_body and start_load is None else None)
     psi = loads.azimuth
     e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)
     e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)

@@ -189,8 +189,7 @@ def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
     velocities (T, 6 n_nodes)) and derive the outputs; ``chunk`` states go through the
     connector's numpy path at once."""
     time = np.asarray(time, dtype=float)
-    parts = [_outputs(handle.connector, time[k:k + chunk], q[k:k + chunk], q_t[k:k + chunk])
-             for k in range(0, len(time), chunk)]
+    parts = [_outputs(handle.connector, time[part], q[part], q_t[part]) for part in _chunks(handle, time, chunk)]
     out = {name: (np.concatenate([p[name] for p in parts]) if not isinstance(parts[0][name], dict) else
                   {f: np.concatenate([p[name][f] for p in parts]) for f in parts[0][name]})
            for name in parts[0]}
@@ -204,6 +203,22 @@ def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
                           out["inner"], out["outer"], out["inner_race_force"], out["inner_moment"],
                           out["outer_race_force"], out["cage_eccentricity"], out["land_force"], mu_max, warning,
                           out["outer_moment"], out["drag_loss"], out["cage_loss"], out["land_loss"], out["land_drive"])
+
+
+def _chunks(handle, time, chunk):
+    """Slices of at most ``chunk`` recorded states; with temperatures in the solve (MODEL.md
+    §14g), each within one update of the contacts' oils, which are set for it here (every
+    state is evaluated with the oils it ran with; the last update's are left set)."""
+    temperatures = getattr(handle, "temperatures", None)
+    if temperatures is None or not temperatures.updates:
+        yield from (slice(k, k + chunk) for k in range(0, len(time), chunk))
+        return
+    update = temperatures.oils_at(time)
+    edges = np.flatnonzero(np.diff(update)) + 1
+    for lo, hi in zip(np.concatenate([[0], edges]), np.concatenate([edges, [len(time)]])):
+        handle.connector.set_oils(*temperatures.updates[update[lo]]["oils"])
+        yield from (slice(k, min(k + chunk, hi)) for k in range(lo, hi, chunk))
+    handle.connector.set_oils(*temperatures.updates[-1]["oils"])
 
 
 def _outputs(con, time, q, q_t) -> dict:

@@ -16,7 +16,8 @@ from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inle
 from .steady_balance import solve_steady, steady_result
 from .steady_power import steady_losses
 
-__all__ = ["thermal_steady_state", "TEMPERATURE_TOLERANCE_K", "MAX_ITERATIONS"]
+__all__ = ["thermal_steady_state", "thermal_geometry", "contact_oils", "heated", "TEMPERATURE_TOLERANCE_K",
+           "MAX_ITERATIONS"]
 
 #: the fixed point is reached when no node's temperature changes by more than this, K
 TEMPERATURE_TOLERANCE_K = 0.01
@@ -46,7 +47,9 @@ def operating_point(solved) -> OperatingPoint:
     return OperatingPoint(solved.w_i, solved.w_o, float(w_c), float(np.linalg.norm(w_b)), *contacts)
 
 
-def _geometry(setup):
+def thermal_geometry(setup):
+    """The network's :class:`~contact.bearing_thermal.ThermalGeometry` of ``setup`` (its
+    bearing, cage mass and guiding land)."""
     bearing, cage = setup.bearing, setup.cage
     land = None
     if cage.guided and cage.land_width > 0:
@@ -68,7 +71,7 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
     ``thermal`` model) and its temperatures (MODEL.md §14d); called by
     :func:`~exudyn_bearing.steady_state` with checked inputs."""
     model, lubricant = setup.thermal, setup.lubricant
-    geometry = _geometry(setup)
+    geometry = thermal_geometry(setup)
     oil_fraction = 1.0 if setup.drag is None else setup.drag.oil_volume_fraction
     t_in = inlet_temperature(model, lubricant)
     temperatures = {name: t_in for name in NODES}

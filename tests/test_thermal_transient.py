@@ -1,0 +1,155 @@
+"""The thermal network integrated by Exudyn with the bearing (MODEL.md §14g): checked
+against closed forms, conservation of energy, the loss breakdown and the steady solver,
+never against the code's own output."""
+import exudyn as exu
+import numpy as np
+import pytest
+from scipy.linalg import expm
+
+from contact.bearing_thermal import NODES, ThermalModel, place_heat
+from contact.thermal_network import ThermalNetwork
+from exudyn_bearing import races
+from exudyn_bearing.bearingfile import as_setup
+from exudyn_bearing.model.builder import CreateAngularContactBearing
+from exudyn_bearing.model.thermal_nodes import add_network, set_network
+from exudyn_bearing.presets import REFERENCE_BEARING
+from exudyn_bearing.solvers.thermal import contact_oils
+
+THERMAL = as_setup(REFERENCE_BEARING).replace(thermal=ThermalModel())
+
+
+def _settings(end, steps):
+    s = exu.SimulationSettings()
+    s.timeIntegration.endTime, s.timeIntegration.numberOfSteps = end, steps
+    s.timeIntegration.verboseMode = 0
+    s.solution.sensors.writePeriod = end / steps
+    return s
+
+
+def test_exudyn_integrates_a_two_node_network_to_its_closed_form():
+    """Ring (C1) -- G12 -- housing (C2) -- G2a -- ambient, Q into the ring, as the bearing's
+    nodes are given to Exudyn (add_network, set_network): T(t) = T_inf + exp(M t)(T0 - T_inf),
+    M = -C^-1 A, against the matrix exponential; then the heat doubled (a load step)."""
+    c, g12, g2a, ta = np.array([40.0, 90.0]), 3.0, 1.2, 300.0
+    net = ThermalNetwork(("ring", "housing"), c, {("ring", "housing"): g12}, {"ambient": ta},
+                         {("housing", "ambient"): g2a})
+    mbs = exu.SystemContainer().AddSystem()
+    node, obj, sensor = add_network(mbs, [ta, ta])
+    started, doubled = [], []
+
+    def step(mbs_, t_end):  # Exudyn passes the step's end time; the state is the start's
+        if not started:
+            started.append(t_end)
+            set_network(mbs_, obj, net, {"ring": 25.0}, (node, [ta, ta]))
+        if t_end > 30.0 + 1e-9 and not doubled:
+            doubled.append(t_end)
+            set_network(mbs_, obj, net, {"ring": 50.0}, (node, mbs_.systemData.GetODE1Coordinates()))
+        return True
+
+    mbs.SetPreStepUserFunction(step)
+    mbs.Assemble()
+    exu.SolveDynamic(mbs, _settings(60.0, 6000))
+    data = np.asarray(mbs.GetSensorStoredData(sensor))
+    a = np.array([[g12, -g12], [-g12, g12 + g2a]])
+    m = -a / c[:, None]
+    t_inf = np.linalg.solve(a, [25.0, g2a * ta])
+    k30 = int(np.argmin(abs(data[:, 0] - 30.0)))
+    exact30 = t_inf + expm(m * 30.0) @ (np.array([ta, ta]) - t_inf)
+    assert data[k30, 0] == pytest.approx(30.0)
+    assert np.allclose(data[k30, 1:], exact30, atol=1e-6 * (exact30[0] - ta))
+    t_inf2 = np.linalg.solve(a, [50.0, g2a * ta])
+    exact60 = t_inf2 + expm(m * 30.0) @ (exact30 - t_inf2)
+    assert np.allclose(data[-1, 1:], exact60, atol=1e-6 * (exact60[0] - ta))
+    # the slow mode's time constant, the closed form's eigenvalue, read from the run
+    slow = -1.0 / max(np.linalg.eigvals(m).real)
+    assert slow > 30.0 / 5  # the check above is not at the steady state already
+
+
+@pytest.fixture(scope="module")
+def inlet_run():
+    mbs = exu.SystemContainer().AddSystem()
+    brg = CreateAngularContactBearing(mbs, THERMAL, innerRace=races.Free(1800), axialForce=1300.0, show=False,
+                                      initialTemperatures="inlet", thermalUpdatePeriod=2.5e-4)
+    mbs.Assemble()
+    exu.SolveDynamic(mbs, _settings(0.004, 40))
+    return mbs, brg
+
+
+def test_the_heat_into_the_nodes_is_the_loss_breakdown_of_each_state(inlet_run):
+    """At every update the nodes' heat sums to the recomputed outputs' total loss at that
+    state (results.outputs: by source, each recorded state with the oils it ran with) to
+    1e-9: nothing lost between the losses and the nodes, and the outputs see the run's oils."""
+    mbs, brg = inlet_run
+    res = brg.Results(mbs)
+    total = res.power_loss()["total"]
+    ups = brg.temperatures.updates
+    gaps = np.diff([u["time_s"] for u in ups])  # every 2.5e-4 s at the 1e-4-s steps: at every third step
+    assert len(ups) == 14 and np.allclose(gaps, 3e-4)
+    for u in ups:
+        k = int(np.argmin(abs(res.time - u["time_s"])))
+        assert res.time[k] == pytest.approx(u["time_s"], abs=1e-12)
+        assert sum(u["heat_W"].values()) == pytest.approx(total[k], rel=1e-9)
+        assert sum(u["heat_W"].values()) == pytest.approx(sum(u["losses_W"].values()), rel=1e-12)
+    # the oils follow the nodes: the last update's, from its temperatures
+    last = ups[-1]
+    inner, outer, land = contact_oils(THERMAL.lubricant, last["temperatures_K"], "outer")
+    assert brg.connector.oils[0].viscosity == pytest.approx(inner.viscosity, rel=1e-12)
+    assert brg.connector.oils[1].viscosity == pytest.approx(outer.viscosity, rel=1e-12)
+
+
+def test_the_nodes_store_the_heat_not_carried_off(inlet_run):
+    """Energy: sum C_i (T_i(end) - T_i(0)) = integral of (heat made - heat to the
+    boundaries) dt, the latter by the trapezoid rule over the recorded temperatures with
+    each update's network and heat (Exudyn's rule for first-order states), to 1e-6."""
+    mbs, brg = inlet_run
+    t, temps = brg.temperatures.history(mbs)
+    ups = brg.temperatures.updates
+    idx = brg.temperatures.oils_at(t)  # the update in effect over the step ending at t
+    # the step ending at t[k] ran with update idx[k]: its rates at both ends of the step
+    made = 0.0
+    for k in range(1, len(t)):
+        u = ups[idx[k]]
+        ends = [sum(u["heat_W"].values()) - sum(u["network"].to_boundaries(dict(zip(NODES, temps[j]))).values())
+                for j in (k - 1, k)]
+        made += 0.5 * (t[k] - t[k - 1]) * sum(ends)
+    stored = float(ups[0]["network"].capacity @ (temps[-1] - temps[0]))
+    assert stored > 0
+    assert stored == pytest.approx(made, rel=1e-6)
+
+
+def test_a_run_from_the_thermal_steady_state_stays_there():
+    """initialTemperatures='steady': the start's nodes are the steady solver's, the heat the
+    dynamic state makes at t = 0 is the steady solver's loss (0.5 %) and equals the heat
+    the network removes there (0.5 %), and 5 ms later no node moved by 1 mK."""
+    mbs = exu.SystemContainer().AddSystem()
+    brg = CreateAngularContactBearing(mbs, THERMAL, innerRace=races.Free(1800), axialForce=1300.0, show=False,
+                                      initialTemperatures="steady")
+    mbs.Assemble()
+    exu.SolveDynamic(mbs, _settings(0.005, 50))
+    th = brg.temperatures
+    steady = th.start.steady.thermal
+    assert th.start.kind == "steady"
+    first = th.updates[0]
+    made = sum(first["heat_W"].values())
+    assert made == pytest.approx(sum(steady["heat_by_place_W"].values()), rel=5e-3)
+    assert made == pytest.approx(sum(first["removed_W"].values()), rel=5e-3)
+    _, temps = th.history(mbs)
+    assert np.max(np.abs(temps[-1] - np.array([steady["temperatures_K"][k] for k in NODES]))) < 1e-3
+
+
+def test_bad_thermal_start_inputs_are_refused_by_name():
+    for kw, name in (({"initialTemperatures": "cold"}, "initialTemperatures"),
+                     ({"initialTemperatures": "steady", "radialForce": 500.0}, "initialTemperatures"),
+                     ({"thermalUpdatePeriod": 0.0}, "thermalUpdatePeriod")):
+        mbs = exu.SystemContainer().AddSystem()
+        with pytest.raises(ValueError, match=name):
+            CreateAngularContactBearing(mbs, THERMAL, innerRace=races.Free(1800), axialForce=1300.0, show=False,
+                                        **kw)
+
+
+def test_heat_split_places_every_loss_of_a_dynamic_state():
+    """place_heat takes every place a dynamic state's losses name (contacts with their
+    damping, rolling resistance, drag, pockets, the land) and keeps their sum."""
+    losses = {"inner_contacts": 3.0, "outer_contacts": 2.0, "rolling_resistance": 1.0, "ball_drag": 4.0,
+              "pockets": 0.5, "land_inner": 0.25}
+    assert sum(place_heat(losses).values()) == pytest.approx(sum(losses.values()), rel=1e-15)
