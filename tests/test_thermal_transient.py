@@ -1,6 +1,11 @@
 """The thermal network integrated by Exudyn with the bearing (MODEL.md §14g): checked
 against closed forms, conservation of energy, the loss breakdown and the steady solver,
 never against the code's own output."""
+import json
+import subprocess
+import sys
+import dataclasses
+
 import exudyn as exu
 import numpy as np
 import pytest
@@ -8,7 +13,10 @@ from scipy.linalg import expm
 
 from contact.bearing_thermal import NODES, ThermalModel, place_heat
 from contact.thermal_network import ThermalNetwork
-from exudyn_bearing import races
+from contact.ballrace import ContactLaw
+from contact.lubricant import REFERENCE_LUBRICANT
+from exudyn_bearing import (Bearing, CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, BearingSetup,
+                            CageModel, races, simulate)
 from exudyn_bearing.bearingfile import as_setup
 from exudyn_bearing.model.builder import CreateAngularContactBearing
 from exudyn_bearing.model.thermal_nodes import add_network, set_network
@@ -153,3 +161,84 @@ def test_heat_split_places_every_loss_of_a_dynamic_state():
     losses = {"inner_contacts": 3.0, "outer_contacts": 2.0, "rolling_resistance": 1.0, "ball_drag": 4.0,
               "pockets": 0.5, "land_inner": 0.25}
     assert sum(place_heat(losses).values()) == pytest.approx(sum(losses.values()), rel=1e-15)
+
+
+# NASA TP-2275's 35-mm bearing at 28 000 rpm, every loss on (as benchmarks/thermal_tp2275.py)
+HIGH_SPEED = BearingSetup(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_DRAG,
+                          CageModel(guidance="outer", guide_clearance=0.25e-3, land_width=4e-3),
+                          ContactLaw(rolling_resistance=True, thermal_film=True),
+                          thermal=ThermalModel(oil_flow=760e-6 / 60, oil_inlet_temperature=394.0, bore=35e-3))
+
+
+def test_the_spindle_bearing_runs_at_the_thermal_steady_states_loss():
+    """Python API (simulate), high-speed bearing from its thermal steady state: the dynamic
+    run with each race's own oil loses what the steady solver found with the same oils
+    (1 %), its nodes stay (1 mK), and its heat balance holds (0.01 %)."""
+    s = simulate(HIGH_SPEED, axial_force=667.0, rpm=28000.0, time=0.004, initial_temperatures="steady")
+    th = s.thermal
+    steady = s.initial_steady_state
+    assert th["start"] == "steady" and steady.thermal["converged"]
+    assert s.power_loss_W["total"] == pytest.approx(steady.power_loss_W["total"], rel=1e-2)
+    assert max(abs(v) for v in th["temperature_rise_K"].values()) < 1e-3
+    assert abs(th["heat_balance_percent"]) < 1e-2
+    # the races' oils differ (outer ring and balls run hotter than the inner ring, §14e)
+    assert th["contact_oil_temperature_K"]["outer"] > th["contact_oil_temperature_K"]["inner"] + 1.0
+    assert th["contact_viscosity_Pa_s"]["outer"] < th["contact_viscosity_Pa_s"]["inner"]
+
+
+def test_a_cold_start_heats_the_oil_first_and_keeps_its_energy():
+    """From the inlet temperature the cavity's oil (the smallest capacity, fed by drag and
+    rolling resistance) warms fastest; made = carried off + stored over the window (0.05 %:
+    the outputs' trapezoid over recorded temperatures), and the run's record names its start."""
+    s = simulate(HIGH_SPEED, axial_force=667.0, rpm=28000.0, time=0.004, initial_temperatures="inlet")
+    th = s.thermal
+    rise = th["temperature_rise_K"]
+    assert th["start"] == "inlet" and set(th["start_temperatures_K"].values()) == {394.0}
+    assert rise["oil"] > 1.0 and rise["oil"] == max(rise.values())
+    assert abs(th["heat_balance_percent"]) < 5e-2
+    assert th["stored_W"] > 0.1 * sum(th["heat_W"].values())
+    assert "thermal" in s.inputs and s.inputs["initial_temperatures"] == "'inlet'"
+
+
+def test_a_deep_groove_bearing_under_radial_load_starts_at_the_inlet_in_a_plain_scene():
+    """Plain SolveDynamic, the Case Western 6205 (15 um play) under radial load, at its
+    recommended step and tolerance: 'auto' has
+    no thermal steady state there and starts every node at the inlet; the heat into the
+    nodes is each update's loss breakdown and the energy is kept (1e-6)."""
+    fields = {f.name: getattr(CWRU_6205_BEARING, f.name) for f in dataclasses.fields(CWRU_6205_BEARING)
+              if f.name != "contact_angle"}
+    setup = BearingSetup(Bearing.from_clearance(diametral_clearance=15e-6, **fields), thermal=ThermalModel())
+    mbs = exu.SystemContainer().AddSystem()
+    brg = CreateAngularContactBearing(mbs, setup, innerRace=races.Driven(3000), radialForce=300.0, show=False,
+                                      thermalUpdatePeriod=5e-4)
+    mbs.Assemble()
+    settings = _settings(0.002, round(0.002 / brg.RecommendedStep()))
+    settings.timeIntegration.newton.absoluteTolerance = brg.RecommendedAbsoluteTolerance()
+    exu.SolveDynamic(mbs, settings)
+    th = brg.temperatures
+    assert th.start.kind == "inlet"
+    t, temps = th.history(mbs)
+    idx = th.oils_at(t)
+    made = sum(0.5 * (t[k] - t[k - 1]) * sum(
+        sum(th.updates[idx[k]]["heat_W"].values()) - sum(th.updates[idx[k]]["network"].to_boundaries(
+            dict(zip(NODES, temps[j]))).values()) for j in (k - 1, k)) for k in range(1, len(t)))
+    stored = float(th.updates[0]["network"].capacity @ (temps[-1] - temps[0]))
+    assert stored == pytest.approx(made, rel=1e-6)
+
+
+def test_the_cli_simulates_with_temperatures_and_plots_them(tmp_path):
+    """CLI door: ``simulate --thermal`` (the reference bearing without a [thermal] section:
+    its defaults) reports the nodes, the heat and its balance, and draws the temperatures."""
+    png = tmp_path / "run.png"
+    proc = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--axial", "1300", "--time", "0.003",
+                           "--thermal", "--initial-temperatures", "inlet", "--plot", str(png), "--json"],
+                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    data = json.loads(proc.stdout)
+    th = data["thermal"]
+    inlet = REFERENCE_LUBRICANT.reference_temperature + 273.15
+    assert all(v == pytest.approx(inlet) for v in th["start_temperatures_K"].values())
+    assert sum(th["heat_W"].values()) == pytest.approx(sum(th["heat_by_place_W"].values()), rel=1e-9)
+    assert abs(th["heat_balance_percent"]) < 5e-2
+    assert data["units"]["thermal"]["temperatures_K"]["oil"] == "K" and "thermal" in data["inputs"]
+    assert (tmp_path / "run_temperatures.png").stat().st_size > 10_000

@@ -61,7 +61,12 @@ class BearingHandle:
         (:func:`exudyn_bearing.results.records.inputs_record`)."""
         con = self.connector
         surface = {} if con.surface is None else {"surface": con.surface}  # (a perfect bearing's record as before)
-        return inputs_record(self.bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
+        bearing, th = self.bearing, self.temperatures
+        if th is not None:  # the bearing as given (the run's is grown to its start temperatures)
+            bearing = th.start.cold.bearing
+            surface |= {"thermal": th.model, "initial_temperatures": th.start.kind,
+                        "thermal_update_period_s": th.update_period}
+        return inputs_record(bearing, lubricant=con.lubricant, drag=con.drag, contact_law=con.law,
                              cage=con.cage, races=con.races, **surface, **settings)
 
     def States(self, mbs):

@@ -247,6 +247,7 @@ class ThermalStart(NamedTuple):
     start_setup: object  #: the same with the start's one oil (the start solvers take one)
     steady: object  #: the thermal :class:`SteadyState` started from, or None
     geometry: object  #: the network's sizes (:func:`~exudyn_bearing.solvers.thermal.thermal_geometry`, as given)
+    cold: object  #: the setup as given (its bearing at the assembly temperature)
 
 
 def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, rpm_i, rpm_o, inner_kind,
@@ -280,9 +281,10 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
     if steady is not None:
         temperatures = dict(steady.thermal["temperatures_K"])
         grown = heated(setup, temperatures)
-        return ThermalStart("steady", temperatures, grown, grown, steady, thermal_geometry(setup))
+        return ThermalStart("steady", temperatures, grown, grown, steady, thermal_geometry(setup), setup)
     t_in = inlet_temperature(setup.thermal, lubricant)
     temperatures = {name: t_in for name in NODES}
     grown = heated(setup, temperatures)
     return ThermalStart("inlet", temperatures, grown,
-                        grown.replace(lubricant=lubricant.at_temperature(t_in - 273.15)), None, thermal_geometry(setup))
+                        grown.replace(lubricant=lubricant.at_temperature(t_in - 273.15)), None, thermal_geometry(setup),
+                        setup)

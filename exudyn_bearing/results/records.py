@@ -29,7 +29,7 @@ UNITS = {
 
 #: unit suffixes of result names
 SUFFIXES = {"_percent": "%", "_deg": "deg", "_Pa_s": "Pa s", "_W_per_K": "W/K", "_us": "us", "_ms": "ms", "_s": "s",
-            "_W": "W", "_K": "K"}
+            "_W": "W", "_K": "K", "_m": "m"}
 
 
 def unit_of(name: str) -> str:

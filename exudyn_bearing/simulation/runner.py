@@ -16,6 +16,7 @@ from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..errors import BearingSimulationError
 from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
+from ..model.thermal_nodes import UPDATE_PERIOD
 from ..presets import REFERENCE_BEARING
 from ..races import node_rows
 from ..renamed import accepts_old_names
@@ -312,6 +313,10 @@ class SimulationSummary:
     #: with ``profile``: the integration's force evaluations and Jacobians (counts, s), the
     #: rest (Exudyn's own work and the glue around them, s); else empty
     integration_profile: dict = field(default_factory=dict)
+    #: with the setup's thermal network (MODEL.md §14g): node temperatures, heat by place and
+    #: node, heat carried off and stored (:func:`exudyn_bearing.results.temperatures.thermal_summary`);
+    #: else None
+    thermal: dict | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready: the fields (not the results object), ``units`` (the unit of every key)
@@ -334,7 +339,8 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
              axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
              settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FROM_SETUP,
              contact_law: ContactLaw = FROM_SETUP, cage: CageModel = FROM_SETUP, surface=FROM_SETUP,
-             error_estimate: bool = False, initial_state: str = "auto", profile: bool = False) -> SimulationSummary:
+             error_estimate: bool = False, initial_state: str = "auto", profile: bool = False,
+             initial_temperatures: str = "auto") -> SimulationSummary:
     """Simulate one bearing (inner race driven at ``rpm`` with free translation under the
     axial and radial force, outer race fixed) for ``time`` s and summarize the last third.
 
@@ -350,7 +356,9 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     housing (the outer race on it, §13a) — each unless passed explicitly. The summary's
     ``call_time_s`` says where the call's time went; with ``profile`` its
     ``integration_profile`` splits the integration (a timer around each force evaluation and
-    Jacobian, ~1 us each).
+    Jacobian, ~1 us each). A setup with a ``thermal`` model runs its network with the bodies
+    (MODEL.md §14g), from ``initial_temperatures`` (``CreateAngularContactBearing(initialTemperatures=...)``),
+    and the summary's ``thermal`` says where the heat went.
     """
     import exudyn as exu
 
@@ -366,7 +374,8 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     mbs = sc.AddSystem()
     # (outer race: the builder's default, the setup's housing or a fixed race)
     handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(rpm), axialForce=axial_force,
-                                         radialForce=radial_force, initialState=initial_state, show=False)
+                                         radialForce=radial_force, initialState=initial_state,
+                                         initialTemperatures=initial_temperatures, show=False)
     clock = EvaluationClock(handle.connector) if profile else None
     built = _time.perf_counter()
     mbs.Assemble()
@@ -375,6 +384,11 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     integrated = _time.perf_counter()
     results = handle.Results(mbs)
     summary = results.summary()
+    thermal = None
+    if handle.temperatures is not None:
+        from ..results.temperatures import thermal_summary
+
+        thermal = thermal_summary(handle.temperatures, mbs)
     done = _time.perf_counter()
     call = {"build": built - called, "assembly": assembled - built, "integration": integrated - assembled,
             "outputs": done - integrated}
@@ -384,7 +398,7 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
                         relative_tolerance=0.5 * settings.relative_tolerance,
                         absolute_tolerance=0.5 * info.solver["absolute_tolerance"])
         ref = simulate(setup, axial_force=axial_force, radial_force=radial_force, rpm=rpm, time=time,
-                       settings=finer, initial_state=initial_state)
+                       settings=finer, initial_state=initial_state, initial_temperatures=initial_temperatures)
         keys = ("cage_slip_percent", "kinematic_cage_slip_percent", "cage_speed", "max_inner_load", "max_outer_load",
                 "max_inner_slip")
         other = ref.details | {k: getattr(ref, k) for k in ("cage_slip_percent", "kinematic_cage_slip_percent",
@@ -401,7 +415,9 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
                              {k: v for k, v in summary.items() if k not in _SUMMARY_FIELDS},
                              estimate, results, handle.initialSteadyState, summary["power_loss_W"],
                              summary["drive_power_W"],
-                             setup_inputs(setup, initial_state=initial_state),
+                             setup_inputs(setup, initial_state=initial_state,
+                                          **({} if thermal is None else {"initial_temperatures": initial_temperatures,
+                                                                         "thermal_update_period_s": UPDATE_PERIOD})),
                              info.cpu_time_s, assumptions_record(setup.drag, setup.contact_law, setup.lubricant),
-                             call, {} if clock is None else clock.split(info.steps, call["integration"]))
+                             call, {} if clock is None else clock.split(info.steps, call["integration"]), thermal)
 

@@ -76,7 +76,7 @@ def _simulate(args) -> int:
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
-    setup = _setup(args)
+    setup = _thermal(args, _setup(args))
     if args.order is not None:
         setup = setup.replace(contact_law=_law(args, setup, quadrature_order=args.order))
     if args.plot:
@@ -89,13 +89,22 @@ def _simulate(args) -> int:
                               output_step=args.output_step if args.step is None else max(args.step, args.output_step))
     summary = simulate(setup, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm, time=args.time,
                        settings=settings, error_estimate=args.error_estimate, initial_state=args.start,
-                       profile=args.profile)
+                       profile=args.profile, initial_temperatures=args.initial_temperatures)
     data = summary.to_dict()
     if args.plot:
         from ..results.plots import plot_run
 
-        plot_run(summary.results, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm")
+        title = f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm"
+        plot_run(summary.results, args.plot, title=title)
         data["plot"] = str(args.plot)
+        if summary.thermal is not None:
+            from pathlib import Path
+
+            from ..results.temperatures import plot_temperatures
+
+            path = Path(args.plot)
+            data["temperature_plot"] = str(path.with_name(path.stem + "_temperatures.png"))
+            plot_temperatures(summary.thermal, data["temperature_plot"], title=title)
     if args.json:
         json.dump(data, sys.stdout, indent=1)
         print()
@@ -132,6 +141,15 @@ def _simulate(args) -> int:
               f"a step, {prof['force_evaluation_us']:.0f} us each) {prof['force_evaluations_s']:.2f} s, "
               f"{prof['jacobians']} Jacobians ({prof['jacobian_ms']:.2f} ms each) {prof['jacobians_s']:.2f} s, "
               f"Exudyn's own work and glue {prof['exudyn_and_glue_s']:.2f} s")
+    th = data.get("thermal")
+    if th:
+        print(f"  temperatures (MODEL.md §14g), K     " + ", ".join(
+            f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})" for k, v in th["temperatures_K"].items())
+            + f"; from the {'thermal steady state' if th['start'] == 'steady' else 'oil inlet temperature'}")
+        print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {th['removed_W']['oil_inlet']:.1f} W, "
+              f"to ambient {th['removed_W']['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
+              f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner "
+              f"{th['contact_oil_temperature_K']['inner']:.2f} K, outer {th['contact_oil_temperature_K']['outer']:.2f} K")
     est = data.get("error_estimate")
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")
@@ -344,6 +362,16 @@ def _steps_said(solver: dict) -> str:
             f"{coarse:g} s elsewhere")
 
 
+def _thermal(args, setup):
+    """``setup`` with the thermal network's defaults where ``--thermal`` asks for one and the
+    bearing file has no ``[thermal]`` (MODEL.md §14)."""
+    if args.thermal and setup.thermal is None:
+        from contact.bearing_thermal import ThermalModel
+
+        return setup.replace(thermal=ThermalModel())
+    return setup
+
+
 def _steady(args) -> int:
     from ..results.records import units_of
     from ..criteria import gyroscopic_minimum_axial, hirano_minimum_axial
@@ -357,10 +385,7 @@ def _steady(args) -> int:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
     setup = _setup(args)
-    if args.thermal and setup.thermal is None:
-        from contact.bearing_thermal import ThermalModel
-
-        setup = setup.replace(thermal=ThermalModel())
+    setup = _thermal(args, setup)
     state = steady_state(setup, axial_force=args.axial, rpm=args.rpm)
     data = state.to_dict()
     data["assumptions"] = assumptions_record(setup.drag, setup.contact_law, setup.lubricant)

@@ -97,7 +97,14 @@ def _simulate_options(p) -> None:
     p.add_argument("--start", choices=("auto", "steady", "rolling"), default="auto",
                    help="start state: steady (axial: the steady state; combined load: every ball's own balance, "
                         "MODEL.md §12a), rolling (pure rolling), auto (steady where it applies, else rolling)")
-    p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra)")
+    p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra); "
+                   "with temperatures also PNG's name + '_temperatures.png'")
+    p.add_argument("--thermal", action="store_true",
+                   help="integrate the thermal network with the bodies (MODEL.md §14g): the bearing file's "
+                        "[thermal], else its defaults; a file with [thermal] runs it without this flag")
+    p.add_argument("--initial-temperatures", choices=("auto", "steady", "inlet"), default="auto",
+                   help="with temperatures: start from the thermal steady state (pure axial load), every node at "
+                        "the oil inlet, or auto (steady where it applies, else inlet)")
     p.add_argument("--profile", action="store_true",
                    help="split the integration's time: force evaluations, Jacobians, Exudyn's own work and glue")
 
