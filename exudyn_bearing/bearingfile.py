@@ -61,7 +61,7 @@ Example::
     mass = 2.0                       # kg, ring included
     damping_ratio = 0.05             # of critical
 
-    [thermal]                        # optional: the thermal network (MODEL.md §14), steady only
+    [thermal]                        # optional: the thermal network (MODEL.md §14): steady, simulate
     oil_flow = 1.27e-5               # m^3/s through the bearing
     oil_inlet_temperature = 394.0    # K; absent: the lubricant's reference temperature
     ambient_temperature = 293.15     # K

@@ -81,8 +81,8 @@ class BearingSetup:
     thermal : contact.bearing_thermal.ThermalModel or None
         The thermal network's inputs (MODEL.md §14): oil flow and inlet temperature, ambient,
         ring, housing and shaft sizes; None: every contact at the lubricant's viscosity.
-        Used by :func:`~exudyn_bearing.steady_state`; refused by the commands that do not
-        model temperatures yet (:func:`refuse_thermal`).
+        Used by :func:`~exudyn_bearing.steady_state` and the dynamic model (§14g); refused by those that do not
+        model temperatures (:func:`refuse_thermal`).
     """
 
     bearing: Bearing
@@ -131,8 +131,8 @@ def refuse_surface(setup: BearingSetup, where: str, instead: str) -> None:
 
 def refuse_thermal(setup: BearingSetup, where: str) -> None:
     """A ValueError naming the thermal section a command without temperatures cannot use
-    (MODEL.md §14: so far the steady state solves the network)."""
+    (MODEL.md §14: the steady state and the dynamic model solve the network)."""
     if setup.thermal is not None:
-        raise ValueError(f"[thermal]: {where} does not model temperatures yet (the steady state does: "
-                         "steady_state, or the CLI's 'steady'); give the bearing without its thermal "
-                         "section (setup.replace(thermal=None)) to run it isothermal")
+        raise ValueError(f"[thermal]: {where} does not model temperatures (the steady state and the dynamic "
+                         "model do: steady_state and simulate, or the CLI's 'steady' and 'simulate'); give the "
+                         "bearing without its thermal section (setup.replace(thermal=None)) to run it isothermal")

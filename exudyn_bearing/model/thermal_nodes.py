@@ -20,7 +20,7 @@ import numpy as np
 
 from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, place_heat
 from ..races import node_rows
-from ..solvers.thermal import contact_oils
+from ..solvers.thermal import contact_oils, heated
 
 __all__ = ["BearingTemperatures", "ThermalStart", "thermal_start", "place_losses", "operating_point_of", "add_network",
            "set_network", "UPDATE_PERIOD"]
@@ -126,6 +126,12 @@ class BearingTemperatures:
         t, self._last = self._last, t_end  # the coordinates are still those at the step's start
         first = not self._rows
         if not first and t < self._next - 1e-12 * max(1.0, abs(t)):
+            at = mbs.GetNodeODE1Index(self.node)
+            if not np.any(np.asarray(mbs.systemData.GetODE1Coordinates_t())[at:at + len(NODES)]):
+                # a new solve between two updates: its stored start rate is zero (set_network)
+                temps = self.temperatures(mbs)
+                set_network(mbs, self.object, self.network, self.updates[-1]["heat_W"],
+                            (self.node, [temps[k] for k in NODES]))
             return
         if first:
             self._rows.extend(node_rows(mbs, self.nodes))
@@ -154,6 +160,12 @@ class BearingTemperatures:
         self.updates.append({"time_s": float(t), "losses_W": losses, "heat_W": heat, "temperatures_K": temps,
                              "removed_W": network.to_boundaries(temps), "network": network,
                              "oils": con.oils})
+
+    def clearance_change(self, temperatures: dict) -> float:
+        """The diametral clearance's change, m, from the run's (the start temperatures')
+        to the bearing grown to ``temperatures`` {node: K} (MODEL.md §14f; the run holds the
+        start's geometry); a ValueError where they close the clearance."""
+        return heated(self.start.cold, temperatures).bearing.diametral_clearance - self.setup.bearing.diametral_clearance
 
     def history(self, mbs):
         """(times (T,) s, temperatures (T, 7) K in the order of :data:`NODES`) recorded by
@@ -259,7 +271,7 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
     mechanical state the run then starts from; 'auto' (default) 'steady' where it
     applies and converges, else 'inlet'."""
     from ..solvers.steady import steady_state
-    from ..solvers.thermal import heated, thermal_geometry
+    from ..solvers.thermal import thermal_geometry
 
     if initial_temperatures not in ("auto", "steady", "inlet"):
         raise ValueError(f"initialTemperatures must be 'auto', 'steady' or 'inlet', got {initial_temperatures!r}")

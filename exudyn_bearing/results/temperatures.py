@@ -17,8 +17,6 @@ def thermal_summary(temperatures, mbs, fraction: float = 1 / 3) -> dict:
     ``fraction`` of the run (their balance checks the integration); the contacts' oils at the end; the
     clearance the end temperatures would give (the run holds the start's geometry); and
     the temperatures at every update (``history``)."""
-    from ..solvers.thermal import heated
-
     th = temperatures
     time, temps = th.history(mbs)
     ups = th.updates
@@ -58,8 +56,7 @@ def thermal_summary(temperatures, mbs, fraction: float = 1 / 3) -> dict:
            "history": {"time_s": [u["time_s"] for u in ups],
                        "temperatures_K": {k: [u["temperatures_K"][k] for u in ups] for k in NODES}}}
     try:
-        ran = heated(th.start.cold, th.start.temperatures).bearing.diametral_clearance
-        out["diametral_clearance_change_m"] = heated(th.start.cold, end_k).bearing.diametral_clearance - ran
+        out["diametral_clearance_change_m"] = th.clearance_change(end_k)
     except ValueError as err:  # the end temperatures close the clearance
         out["diametral_clearance_change_m"] = None
         out["clearance_warning"] = str(err)

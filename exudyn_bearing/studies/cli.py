@@ -17,6 +17,7 @@ from ..presets import REFERENCE_BEARING
 from ..setup import FROM_SETUP, BearingSetup
 from ..results.records import assumptions_line, assumptions_record
 from .options import COMMANDS, DefaultsFormatter, join_negative_values
+from .run_report import print_simulation
 
 
 def _setup(args, **changes) -> BearingSetup:
@@ -109,55 +110,7 @@ def _simulate(args) -> int:
         json.dump(data, sys.stdout, indent=1)
         print()
         return 0
-    print(f"Dynamic run: axial {args.axial:g} N, radial {args.radial:g} N, inner race {args.rpm:g} rpm, "
-          f"{args.time:g} s simulated (means over the last third)")
-    print(f"  kinematic cage slip (MODEL.md §7)   {data['kinematic_cage_slip_percent']:8.3f} %   (the skid measure)")
-    print(f"  paper's P19 cage slip (nominal)     {data['cage_slip_percent']:8.3f} %")
-    print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
-    print(f"  cage speed                          {data['cage_speed']:8.3f} rad/s "
-          f"(nominal {data['cage_speed_nominal']:.3f})")
-    verdict = {True: "yes", False: "NO (still drifting: run longer)",
-               None: "too short to judge (runs under 0.05 s)"}[data["settled"]]
-    print(f"  settled                             {verdict}")
-    d = data["details"]
-    print(f"  max inner/outer load                {d['max_inner_load']:.1f} / {d['max_outer_load']:.1f} N")
-    loss = data["power_loss_W"]
-    parts = ", ".join(f"{k.replace('_', ' ')} {v:.1f}" for k, v in loss.items() if k != "total" and abs(v) >= 0.05)
-    print(f"  power loss (MODEL.md §11)           {loss['total']:8.1f} W ({parts or 'none'}); "
-          f"drive {data['drive_power_W']:.1f} W")
-    remainder = {True: "settled: the integrator's damping only",
-                 False: "not settled: it includes kinetic energy still changing",
-                 None: "too short to judge: it includes kinetic energy still changing"}[data["settled"]]
-    print(f"  energy balance (drive - loss)       {d['energy_balance_percent']:8.2f} % of the drive ({remainder})")
-    print(f"  solver {data['solver']['solver']}, step {data['solver']['step']:g} s, {data['steps']} steps, "
-          f"{data['newton_iterations']} Newton iterations, {data['jacobian_updates']} Jacobian updates, "
-          f"wall time {data['wall_time_s']:.1f} s")
-    call = data["call_time_s"]
-    print(f"  whole call {call['whole']:.2f} s: build {call['build']:.2f} (model, start), assembly "
-          f"{call['assembly']:.2f}, integration {call['integration']:.2f}, outputs {call['outputs']:.2f} s")
-    prof = data["integration_profile"]
-    if prof:
-        print(f"    integration: {prof['force_evaluations']} force evaluations ({prof['force_evaluations_per_step']:.1f} "
-              f"a step, {prof['force_evaluation_us']:.0f} us each) {prof['force_evaluations_s']:.2f} s, "
-              f"{prof['jacobians']} Jacobians ({prof['jacobian_ms']:.2f} ms each) {prof['jacobians_s']:.2f} s, "
-              f"Exudyn's own work and glue {prof['exudyn_and_glue_s']:.2f} s")
-    th = data.get("thermal")
-    if th:
-        print(f"  temperatures (MODEL.md §14g), K     " + ", ".join(
-            f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})" for k, v in th["temperatures_K"].items())
-            + f"; from the {'thermal steady state' if th['start'] == 'steady' else 'oil inlet temperature'}")
-        print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {th['removed_W']['oil_inlet']:.1f} W, "
-              f"to ambient {th['removed_W']['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
-              f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner "
-              f"{th['contact_oil_temperature_K']['inner']:.2f} K, outer {th['contact_oil_temperature_K']['outer']:.2f} K")
-    est = data.get("error_estimate")
-    if est:
-        print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")
-        print(f"    cage slip {est['cage_slip_percent']:.3g} pp, kinematic cage slip "
-              f"{est['kinematic_cage_slip_percent']:.3g} pp, cage speed {est['cage_speed']:.3g} rad/s, "
-              f"max inner load {est['max_inner_load']:.3g} N")
-    if args.plot:
-        print(f"  plots written to {args.plot}")
+    print_simulation(data, args)
     return 0
 
 
