@@ -15,8 +15,8 @@ from contact.bearing_thermal import NODES, ThermalModel, place_heat
 from contact.thermal_network import ThermalNetwork
 from contact.ballrace import ContactLaw
 from contact.lubricant import REFERENCE_LUBRICANT
-from exudyn_bearing import (Bearing, CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, BearingSetup,
-                            CageModel, races, simulate)
+from exudyn_bearing import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, Bearing,
+                            BearingSetup, CageModel, races, simulate)
 from exudyn_bearing.bearingfile import as_setup
 from exudyn_bearing.model.builder import CreateAngularContactBearing
 from exudyn_bearing.model.thermal_nodes import add_network, set_network

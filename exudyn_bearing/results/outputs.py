@@ -13,9 +13,8 @@ import numpy as np
 from contact.kinematics import cross, rolling_cage_speed
 from ..errors import TractionCoefficientWarning
 
-__all__ = ["BearingResults", "compute_results", "cage_slip", "settled", "settled_label", "MINIMUM_JUDGING_TIME",
-           "TRACTION_COEFFICIENT_LIMIT",
-           "TractionCoefficientWarning"]
+__all__ = ["BearingResults", "compute_results", "body_losses", "cage_slip", "settled", "settled_label",
+           "MINIMUM_JUDGING_TIME", "TRACTION_COEFFICIENT_LIMIT", "TractionCoefficientWarning"]
 
 #: Traction coefficient |f|/Q above which no real oil transmits the traction (MODEL.md §8:
 #: measured EHL traction coefficients stay below ~0.1-0.15); a run above it gets a warning.
@@ -255,7 +254,7 @@ def _outputs(con, time, q, q_t) -> dict:
            "cage_eccentricity": s.cage_eccentricity,
            "land_force": np.zeros(b) if s.cage_land_force is None else np.linalg.norm(s.cage_land_force, axis=-1),
            "land_drive": s.land_drive_power}
-    out["drag_loss"], out["cage_loss"], out["land_loss"] = _body_losses(s)
+    out["drag_loss"], out["cage_loss"], out["land_loss"] = body_losses(s)
     for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
         # a race receives -F at each contact point and -M_z n: about the bearing centre o that
         # is -[(c - o) x F + (moment on the ball about its centre)]
@@ -272,7 +271,7 @@ def _outputs(con, time, q, q_t) -> dict:
     return out
 
 
-def _body_losses(s) -> tuple:
+def body_losses(s) -> tuple:
     """(ball drag, cage pocket (damping and friction), guiding land) power losses of B states
     (a batched :class:`ConnectorState`), (B,) W each: minus the power of each force pair over
     the velocities of the points it acts on (the pocket reaction acts on the cage at the

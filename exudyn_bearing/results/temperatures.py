@@ -42,7 +42,7 @@ def thermal_summary(temperatures, mbs, fraction: float = 1 / 3) -> dict:
     stored = float(ups[-1]["network"].capacity @ (end - temps[lo]) / span)
     made = float(sum(mean("heat_W").values()))
     end_k = dict(zip(NODES, (float(v) for v in end)))
-    inner, outer, land = th.connector.oils
+    oils = dict(zip(("inner", "outer", "land"), th.connector.oils))
     out = {"start": th.start.kind, "update_period_s": th.update_period,
            "start_temperatures_K": dict(zip(NODES, (float(v) for v in start))), "temperatures_K": end_k,
            "temperature_rise_K": {k: float(e - s) for k, s, e in zip(NODES, start, end)},
@@ -50,9 +50,8 @@ def thermal_summary(temperatures, mbs, fraction: float = 1 / 3) -> dict:
            "stored_W": stored,
            # made = removed + stored over the window: what the network's integration conserves
            "heat_balance_percent": 100.0 * (made - sum(removed.values()) - stored) / made if made > 0 else 0.0,
-           "contact_oil_temperature_K": {k: oil.reference_temperature + 273.15
-                                         for k, oil in zip(("inner", "outer", "land"), (inner, outer, land))},
-           "contact_viscosity_Pa_s": {k: oil.viscosity for k, oil in zip(("inner", "outer", "land"), (inner, outer, land))},
+           "contact_oil_temperature_K": {k: oil.reference_temperature + 273.15 for k, oil in oils.items()},
+           "contact_viscosity_Pa_s": {k: oil.viscosity for k, oil in oils.items()},
            "history": {"time_s": [u["time_s"] for u in ups],
                        "temperatures_K": {k: [u["temperatures_K"][k] for u in ups] for k in NODES}}}
     try:

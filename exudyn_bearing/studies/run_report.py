@@ -45,13 +45,15 @@ def print_simulation(data: dict, args) -> None:
               f"Exudyn's own work and glue {prof['exudyn_and_glue_s']:.2f} s")
     th = data.get("thermal")
     if th:
-        print("  temperatures (MODEL.md §14g), K     " + ", ".join(
-            f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})" for k, v in th["temperatures_K"].items())
-            + f"; from the {'thermal steady state' if th['start'] == 'steady' else 'oil inlet temperature'}")
-        print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {th['removed_W']['oil_inlet']:.1f} W, "
-              f"to ambient {th['removed_W']['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
-              f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner "
-              f"{th['contact_oil_temperature_K']['inner']:.2f} K, outer {th['contact_oil_temperature_K']['outer']:.2f} K")
+        nodes = ", ".join(f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})"
+                          for k, v in th["temperatures_K"].items())
+        start = "thermal steady state" if th["start"] == "steady" else "oil inlet temperature"
+        oil, removed = th["contact_oil_temperature_K"], th["removed_W"]
+        print(f"  temperatures (MODEL.md §14g), K     {nodes}; from the {start}")
+        print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {removed['oil_inlet']:.1f} W, "
+              f"to ambient {removed['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
+              f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner {oil['inner']:.2f} K, "
+              f"outer {oil['outer']:.2f} K")
     est = data.get("error_estimate")
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")
