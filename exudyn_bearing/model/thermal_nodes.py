@@ -107,7 +107,6 @@ class BearingTemperatures:
         self.updates, self._next, self._last, self._rows = [], 0.0, 0.0, []
         # zero rates until the first update (t = 0) sets the network of the start state
         self.node, self.object, self.sensor = add_network(mbs, [self.start_temperatures[k] for k in NODES])
-        self.network = None
         # the start state's heat before Exudyn's solver computes the start rates (its first
         # step's trapezoid takes them); the first pre-step function redoes it, in case the
         # scene moved the bodies after the bearing was created
@@ -115,6 +114,11 @@ class BearingTemperatures:
         v0 = np.concatenate([mbs.GetNodeParameter(n, "initialVelocities") for n in nodes])
         self._update(mbs, 0.0, q0, v0, self.start_temperatures)
         install_pre_step(mbs, self)
+
+    @property
+    def network(self):
+        """The :class:`~contact.thermal_network.ThermalNetwork` of the last update."""
+        return self.updates[-1]["network"]
 
     def temperatures(self, mbs) -> dict:
         """The node temperatures now, {node: K}."""
@@ -146,17 +150,16 @@ class BearingTemperatures:
         """Heat, conductances and oils from the bearing's state (absolute coordinates and
         velocities ``q``, ``q_t`` of its nodes) at ``t`` s and the node temperatures ``temps``
         (``in_step``: from the pre-step function, at the step's start)."""
+        if not all(np.isfinite(v) for v in temps.values()):
+            raise ValueError(f"thermal network: a temperature is not finite at t = {t:.6g} s ({temps})")
         self._next = t + self.update_period
         con = self.connector
         s = con.states(np.array([t]), q[None], q_t[None])
         losses = place_losses(s, self.setup.cage.guidance)
-        if not all(np.isfinite(v) for v in temps.values()):
-            raise ValueError(f"thermal network: a temperature is not finite at t = {t:.6g} s ({temps})")
         network = bearing_network(self.model, self.geometry, operating_point_of(con, s), self.lubricant,
                                   self.oil_fraction, temps["oil"])
         heat = place_heat(losses)
         set_network(mbs, self.object, network, heat, (self.node, [temps[k] for k in NODES]) if in_step else None)
-        self.network = network
         con.set_oils(*contact_oils(self.lubricant, temps, self.setup.cage.guidance))
         self.updates.append({"time_s": float(t), "losses_W": losses, "heat_W": heat, "temperatures_K": temps,
                              "removed_W": network.to_boundaries(temps), "network": network,
