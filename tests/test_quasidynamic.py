@@ -196,3 +196,20 @@ def test_the_start_holds_the_kinematic_slip_with_the_cage_on_its_land():
     assert np.max(np.abs(res.cage_eccentricity - res.cage_eccentricity[0])) < 2e-6
     slip = res.kinematic_cage_slip_percent
     assert np.max(np.abs(slip - slip[0])) < 0.03, slip
+
+
+def test_a_batch_of_balances_is_each_balance_alone():
+    """The Jacobian evaluates its perturbed states in one batch of contacts (issue 52 item 3):
+    each state's parts equal those of the state alone, bit for bit (drag, a seated cage's
+    offset, a tilted pose)."""
+    from contact.ballrace import ContactLaw
+    from exudyn_bearing.solvers import quasidynamic
+    steady = steady_state(B, REFERENCE_LUBRICANT, axial_force=800.0, rpm=1800.0, ball_drag=REFERENCE_DRAG)
+    law, w_i, w_o, land, y = quasidynamic._from_steady(B, REFERENCE_LUBRICANT, steady, ContactLaw(), None, 1800.0, 0.0)
+    rng = np.random.default_rng(3)
+    for kw in (dict(cage_offset=(20e-6, -5e-6, 0.0)), dict(pose=(2e-6, 1e-6, steady.inner_race_shift, 2e-5, 0.0))):
+        balance = quasidynamic._Balance(B, REFERENCE_LUBRICANT, w_i, w_o, REFERENCE_DRAG, law, land, 800.0, 300.0, **kw)
+        xs = (y / balance.scale)[None, :] * (1.0 + 1e-3 * rng.standard_normal((5, len(y))))
+        for x, batched in zip(xs, balance.parts_of_many(xs)):
+            for one, many in zip(balance.parts(x), batched):
+                assert np.array_equal(one, many)

@@ -267,3 +267,51 @@ def test_zero_clearance_deep_groove_under_axial_load():
     res = solve_load_distribution(brg, axial_force=fa, rpm=0)
     np.testing.assert_allclose(res.inner_contact_angle, alpha, atol=2e-3)  # inner/outer Hertz differ slightly
     np.testing.assert_allclose(res.inner_load, fa / (brg.balls * math.sin(alpha)), rtol=5e-3)
+
+
+# ---------------------------------------------------------------------------------------
+# The race's Newton: its Jacobian with the balls condensed out, a warm start (issue 52 item 3)
+# ---------------------------------------------------------------------------------------
+def _resolved_race_jacobian(model, x, steps, length):
+    """d(race force, moment / length)/d(pose) by central differences of balances re-solved at
+    each perturbed pose: the independent (and ~5x dearer) way."""
+    def race(xx):
+        offsets, con, _ = model.solve_balls(xx)
+        f, m = model.race_forces(con, model.centres(offsets))
+        return np.concatenate([f, m[:2] / length])
+    return np.stack([(race(x + h * e) - race(x - h * e)) / (2 * h) for h, e in zip(steps, np.eye(5))], axis=1)
+
+
+@pytest.mark.parametrize("bearing, pose, rpm", [
+    (B, (25e-6, 3e-6, -40e-6, 1e-5, -2e-5), 1800.0),  # reference, tilted, centrifugal force on
+    (B, (5e-6, 0.0, 8e-6, 0.0, 0.0), 0.0),
+    ("deep-groove", (20e-6, 0.0, -60e-6, 0.0, 0.0), 1800.0)])
+def test_condensed_race_jacobian_matches_re_solved_balances(bearing, pose, rpm):
+    from exudyn_bearing import Bearing
+    from exudyn_bearing.solvers.geometric import Geometric
+    if bearing == "deep-groove":
+        bearing = Bearing.from_clearance(diametral_clearance=10e-6, balls=6, ball_diameter=11.1e-3,
+                                         pitch_diameter=43.5e-3, inner_conformity=5.772 / 11.1,
+                                         outer_conformity=5.883 / 11.1)
+    w_c = bearing.cage_speed(rpm * math.pi / 30)
+    model = Geometric(bearing, bearing.ball_mass * bearing.pitch_radius * w_c ** 2, "fit")
+    x = np.asarray(pose, dtype=float)
+    offsets, _, _ = model.solve_balls(x)
+    length = bearing.pitch_radius
+    steps = np.array([1e-8, 1e-8, 1e-8, 1e-8 / length, 1e-8 / length])
+    condensed = model.race_jacobian(x, offsets, steps, length)
+    resolved = _resolved_race_jacobian(model, x, steps, length)
+    scale = np.abs(resolved).max()
+    assert scale > 1e6  # N/m: some ball carries load
+    np.testing.assert_allclose(condensed, resolved, atol=1e-5 * scale)
+
+
+def test_a_warm_start_pose_gives_the_same_distribution():
+    cold = solve_load_distribution(B, axial_force=400.0, radial_force=100.0, rpm=1800.0)
+    near = np.concatenate([cold.displacement * 1.02, cold.tilt])
+    warm = solve_load_distribution(B, axial_force=400.0, radial_force=100.0, rpm=1800.0, start_pose=near)
+    np.testing.assert_allclose(warm.inner_load, cold.inner_load, rtol=0, atol=1e-8 * cold.max_load)
+    np.testing.assert_allclose(warm.displacement, cold.displacement, rtol=0, atol=1e-12)
+    assert warm.iterations < cold.iterations
+    with pytest.raises(ValueError, match="start_pose"):
+        solve_load_distribution(B, axial_force=400.0, start_pose=(0.0, np.nan, 0.0))

@@ -68,13 +68,15 @@ def _pure_rolling(setup, loaded, axial, radial, relative, speeds, w_i, w_o, init
     in place by the loads' displacement."""
     bearing = setup.bearing
     z = bearing.balls
-    cage_speed = None
+    cage_speed, pose = None, None
     # the quasi-static centrifugal force at each ball's own pure-rolling orbit (not the
     # nominal cage speed: 200 N would start 13.5 N out of radial balance on a 15 N load)
     for _ in range(20):
         if loaded or start_load is not None:
+            # each round from the last round's pose: the orbit speeds change little
             loads = solve_load_distribution(bearing, axial_force=axial, radial_force=radial, cage_speed=cage_speed,
-                                            **speeds)
+                                            start_pose=pose, **speeds)
+            pose = np.concatenate([loads.displacement, loads.tilt])
             relative[:3] = loads.displacement
         else:
             loads = solve_load_distribution(bearing, displacement=relative, cage_speed=cage_speed, **speeds)

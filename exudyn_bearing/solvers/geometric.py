@@ -10,7 +10,6 @@ import numpy as np
 from contact import geometry
 from ..bearing import Bearing
 from ..errors import QuasiStaticError
-from ..jacobian.differences import central_jacobian
 from .fixed_angle import fixed_angle_balance
 
 __all__ = ["Geometric", "DEEP_GROOVE_MAX_ANGLE", "rotation", "geometric_start", "geometric_balance"]
@@ -161,10 +160,44 @@ class Geometric:
 
     def race_forces(self, con, centres):
         """Force and moment (about the bearing centre) the balls apply to the inner race."""
+        f, m = self.ball_race_forces(con, centres)
+        return f.sum(axis=0), m.sum(axis=0)
+
+    def ball_race_forces(self, con, centres):
+        """Each ball's force and moment (about the bearing centre) on the inner race, (Z, 3) each."""
         q, n = con["inner"]["load"], con["inner"]["normal"]
         f = q[:, None] * n
         points = centres + self.b.ball_radius * n
-        return f.sum(axis=0), np.cross(points, f).sum(axis=0)
+        return f, np.cross(points, f)
+
+    def race_jacobian(self, x, offsets, steps, length):
+        """d(race force, moment / ``length``)/d(pose) (5, 5) with every ball kept in its balance
+        (MODEL.md §4): the balls' offsets condensed out, do/dx = −(∂R/∂o)⁻¹ ∂R/∂x per ball,
+        the partial derivatives by central differences of the contacts at the balanced
+        ``offsets`` (pose steps ``steps``, offset steps 1e-9 m), not of re-solved balances."""
+        def parts(o, xx):
+            res, con = self.ball_residual(o, xx)
+            f, m = self.ball_race_forces(con, self.centres(o))
+            return res, np.concatenate([f, m[:, :2] / length], axis=1)
+
+        def central(shift, h):
+            (res_p, race_p), (res_m, race_m) = (parts(*shift(+h)), parts(*shift(-h)))
+            return (res_p - res_m) / (2 * h), (race_p - race_m) / (2 * h)
+
+        z = self.z
+        ball_x, race_x = np.zeros((z, 2, 5)), np.zeros((z, 5, 5))
+        for k in range(5):
+            e = np.eye(5)[k]
+            ball_x[:, :, k], race_x[:, :, k] = central(lambda h: (offsets, x + h * e), steps[k])
+        ball_o, race_o = np.zeros((z, 2, 2)), np.zeros((z, 5, 2))
+        for a in range(2):
+            e = np.eye(2)[a]
+            ball_o[:, :, a], race_o[:, :, a] = central(lambda h: (offsets + h * e, x), 1e-9)
+        # a ball that touches neither race (no centrifugal force) carries nothing and moves nothing
+        carried = np.abs(np.linalg.det(ball_o)) > 1e-300
+        moved = np.zeros((z, 2, 5))
+        moved[carried] = -np.linalg.solve(ball_o[carried], ball_x[carried])
+        return race_x.sum(axis=0) + np.einsum("zia,zak->ik", race_o, moved)
 
 
 #: Free contact angles up to this (rad) are deep-groove bearings: both shoulders are high, so
@@ -204,13 +237,22 @@ def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> 
     return (axial * a * (2.0 * a) ** 1.5 / (bearing.balls * k)) ** 0.25
 
 
-def geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz_method, max_iter, displacement):
+def geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz_method, max_iter, displacement,
+                    start_pose=None):
     """(inner-race pose (dx, dy, dz, θx, θy) to start the geometric balance from, the balls'
-    offsets there or None): the prescribed ``displacement``, else the fixed-angle answer
-    without centrifugal force, else the grooves carrying a radial load centred."""
+    offsets there or None): the prescribed ``displacement``, else the given ``start_pose``, else
+    the fixed-angle answer without centrifugal force, else the grooves carrying a radial load
+    centred."""
     # start from the fixed-angle answer without centrifugal force
     x = np.zeros(5)
-    if displacement is not None:
+    if start_pose is not None and displacement is None:
+        given = np.asarray(start_pose, dtype=float)
+        if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
+            raise ValueError(f"start_pose must be 3 or 5 finite numbers, got {start_pose!r}")
+        x[:len(given)] = given
+        if hold_axial:
+            x[2] = 0.0
+    elif displacement is not None:
         given = np.asarray(displacement, dtype=float)
         if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
             raise ValueError(f"displacement must be 3 or 5 finite numbers, got {displacement!r}")
@@ -264,7 +306,7 @@ def geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, t
         history.append(float(np.linalg.norm(res)))
         if history[-1] < tol * scale:
             break
-        jac = central_jacobian(lambda xx: race_residual(xx)[0], x, steps, free)
+        jac = model.race_jacobian(x, offsets, steps, length)[np.ix_(free, free)]
         try:
             step = np.linalg.solve(jac, -res)
         except np.linalg.LinAlgError:

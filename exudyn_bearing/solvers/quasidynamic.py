@@ -122,26 +122,59 @@ class _Balance:
     def parts(self, x):
         """Scaled per-ball forces and moments (Z, 3 each), the cage's torque and each ball's
         share of the inner race's force balance (Z, 3), bearing frame."""
+        return self.parts_of_many(x[None, :])[0]
+
+    def parts_of_many(self, xs):
+        """:meth:`parts` of B unknown vectors ``xs`` (B, 6 Z + 4): their ball–race contacts in
+        one call (each contact's forces do not depend on the others', so each state's parts
+        are those of :meth:`parts` alone, bit for bit), the rest state by state."""
+        z = self.z
+        states = [self._motion(x) for x in xs]
+        b = len(states)
+        stack = lambda k: np.concatenate([state[k] for state in states])  # noqa: E731
+        kin = ball_race_kinematics(stack("both"), stack("v"), stack("w"), stack("origin"), np.eye(3), np.zeros(3),
+                                   np.tile(self.race_omega, (b, 1)), self.grooves_of(b), self.b.ball_radius,
+                                   self.signs_of(b))
+        f = ball_race_forces(kin, self.params_of(b), self.lub, self.law, self.terms)
+        return [self._balance(state, f.force[2 * z * i:2 * z * (i + 1)], f.moment[2 * z * i:2 * z * (i + 1)])
+                for i, state in enumerate(states)]
+
+    def grooves_of(self, b):
+        """The contacts' groove records for ``b`` states at once."""
+        return self.grooves if b == 1 else tuple(np.tile(g, b) for g in self.grooves)
+
+    def signs_of(self, b):
+        return self.signs if b == 1 else np.tile(self.signs, b)
+
+    def params_of(self, b):
+        p = self.params
+        return p if b == 1 else replace(p, conformity=np.tile(p.conformity, b), race=np.tile(p.race, b))
+
+    def _motion(self, x):
+        """The unknowns ``x`` unpacked with the balls' contact inputs (both races' contacts)."""
         pocket, w_b, c, w_c, d = self.unpack(x)
         z = self.z
         inner_origin = np.stack([self.e_r @ d, self.e_p @ d, np.full(z, d[2])], axis=1) + self.groove_shift
-        origin = np.concatenate([inner_origin, np.zeros((z, 3))])
-        both = np.concatenate([c, c])
         # v = w_c e_z x (c - e): circular motion about the cage centre e
         arm = np.tile(np.stack([c[:, 0] - self.offset_r, -self.offset_p], axis=1), (2, 1))
-        v = np.stack([-w_c * arm[:, 1], w_c * arm[:, 0], np.zeros(2 * z)], axis=1)
-        kin = ball_race_kinematics(both, v, np.concatenate([w_b, w_b]), origin, np.eye(3), np.zeros(3),
-                                   self.race_omega, self.grooves, self.b.ball_radius, self.signs)
-        f = ball_race_forces(kin, self.params, self.lub, self.law, self.terms)
-        force = f.force[:z] + f.force[z:]
+        return dict(pocket=pocket, w_b=w_b, c=c, w_c=w_c, arm=arm,
+                    origin=np.concatenate([inner_origin, np.zeros((z, 3))]), both=np.concatenate([c, c]),
+                    v=np.stack([-w_c * arm[:, 1], w_c * arm[:, 0], np.zeros(2 * z)], axis=1),
+                    w=np.concatenate([w_b, w_b]))
+
+    def _balance(self, state, contact_force, contact_moment):
+        """:meth:`parts` of one state from its contacts' forces and moments (2 Z, 3)."""
+        z = self.z
+        pocket, w_b, c, w_c, arm, v = (state[k] for k in ("pocket", "w_b", "c", "w_c", "arm", "v"))
+        force = contact_force[:z] + contact_force[z:]
         force[:, :2] += self.b.ball_mass * w_c ** 2 * arm[:z]  # -m a = m w_c^2 (c - e)
         force[:, 1] += pocket
         if self.density > 0:
             force += cage_physics.drag_forces(c, v[:z], _E_Z, np.zeros(3), self.c_d, self.density, self.b.ball_radius)
-        moment = f.moment[:z] + f.moment[z:] - self.inertia * w_c * np.cross(_E_Z, w_b)
+        moment = contact_moment[:z] + contact_moment[z:] - self.inertia * w_c * np.cross(_E_Z, w_b)
         s = self.force_scale
         torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * (c[:, 0] - self.offset_r)))
-        fi = f.force[:z]  # the inner race takes minus each ball's inner contact force
+        fi = contact_force[:z]  # the inner race takes minus each ball's inner contact force
         race = -(fi[:, :1] * self.e_r + fi[:, 1:2] * self.e_p + fi[:, 2:] * _E_Z)
         if self.pose is not None:  # the race is held at its pose: no force balance to share
             race = np.zeros_like(race)
@@ -153,7 +186,11 @@ class _Balance:
         return w_c * (self.transport @ w_b)
 
     def residual(self, x):
-        force, moment, torque, race = self.parts(x)
+        return self._residual(x, self.parts(x))
+
+    def _residual(self, x, parts):
+        """:meth:`residual` of ``x`` from its :meth:`parts`."""
+        force, moment, torque, race = parts
         moment = moment - self.orbit_inertia(x)
         if self.pose is None:
             tail = race.sum(axis=0) + self.applied / self.force_scale
@@ -166,23 +203,28 @@ class _Balance:
         same unknown of every ball; the cage speed and race columns one at a time; the cage
         torque row exact."""
         z, n = self.z, 6 * self.z + 4
-        f0, m0, _, r0 = self.parts(x)
+        # the base state, one perturbation of the same unknown of every ball (k = 0..5) and
+        # the cage speed and race columns one at a time: one batch of contacts
+        states = np.repeat(x[None, :], 1 + 6 + (n - 6 * z), axis=0)
+        for k in range(6):
+            states[1 + k, k:6 * z:6] += step
+        for col in range(6 * z, n):
+            states[7 + col - 6 * z, col] += step
+        parts = self.parts_of_many(states)
+        f0, m0, _, r0 = parts[0]
         jac = np.zeros((n, n))
         rows = np.arange(6 * z).reshape(z, 6)
         race_rows = np.arange(6 * z + 1, n)
         for k in range(6):
-            xk = x.copy()
-            xk[k:6 * z:6] += step
-            f, m, _, r = self.parts(xk)
+            f, m, _, r = parts[1 + k]
             d = np.concatenate([f - f0, m - m0], axis=1) / step
             for i in range(6):
                 jac[rows[:, i], rows[:, k]] = d[:, i]
             jac[race_rows[:, None], rows[:, k][None, :]] = ((r - r0) / step).T
-        base = self.residual(x)
+        base = self._residual(x, parts[0])
         for col in range(6 * z, n):
-            xc = x.copy()
-            xc[col] += step
-            jac[:, col] = (self.residual(xc) - base) / step
+            xc = states[7 + col - 6 * z]
+            jac[:, col] = (self._residual(xc, parts[7 + col - 6 * z]) - base) / step
         pocket, _, c, _, _ = self.unpack(x)
         norm = self.force_scale * self.b.pitch_radius
         # the orbit transport couples the balls' spins: its part of the spin columns exactly

@@ -102,7 +102,7 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
                             rpm: float = 0.0, *, moment: tuple[float, float] | None = None, mode: str = "geometric",
                             hold_axial: bool = False, hertz_method: str = FROM_SETUP, tol: float = 1e-10,
                             max_iter: int = 60, outer_rpm: float = 0.0,
-                            displacement=None, cage_speed=None) -> LoadDistribution:
+                            displacement=None, cage_speed=None, start_pose=None) -> LoadDistribution:
     """Quasi-static load distribution (MODEL.md §4).
 
     Parameters
@@ -140,6 +140,9 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
         Cage (ball orbital) speed for the centrifugal force, rad/s, e.g. the one a dynamic
         run measured, or each ball's own orbital speed (geometric mode); default: the
         nominal pure-rolling speed at ``rpm`` (P19, nominal contact angle).
+    start_pose : (dx, dy, dz[, theta_x, theta_y]), optional
+        Inner-race pose (m, rad) to start the balance from (geometric mode), e.g. the
+        solution at a nearby load or cage speed; default: the fixed-angle answer (§4).
 
     Raises
     ------
@@ -183,7 +186,7 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
 
     model = Geometric(bearing, centrifugal, hertz_method)
     x, offsets = geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz_method, max_iter,
-                                  displacement)
+                                  displacement, start_pose)
     if displacement is not None:  # prescribed displacement: nothing to balance
         return _geometric_result(model, psi, offsets, x, moment, centrifugal, cage, 0)
     x, offsets, it = geometric_balance(model, x, axial_force, radial_force, moment, hold_axial, tol, max_iter)

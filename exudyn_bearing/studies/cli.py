@@ -64,11 +64,12 @@ def _loads(args) -> int:
               f"{math.degrees(result.inner_contact_angle[j]):8.2f} {result.outer_load[j]:9.2f} "
               f"{math.degrees(result.outer_contact_angle[j]):8.2f} {result.inner_deflection[j] * 1e6:8.3f} "
               f"{result.outer_deflection[j] * 1e6:8.3f}")
-    dx, dy, dz = result.displacement * 1e6
+    # + 0.0: a component that rounds to zero prints as 0, whatever side of zero it lay
+    dx, dy, dz = (result.displacement * 1e6).round(3) + 0.0
     print(f"inner-race displacement: x {dx:.3f} um, y {dy:.3f} um, axial {dz:.3f} um; "
-          f"tilt {np.degrees(result.tilt).round(6).tolist()} deg; max contact load {result.max_load:.1f} N")
+          f"tilt {(np.degrees(result.tilt).round(6) + 0.0).tolist()} deg; max contact load {result.max_load:.1f} N")
     if np.any(result.reaction_moment != 0):
-        print(f"reaction moment on the shaft (tilt held): {result.reaction_moment.round(4).tolist()} N m")
+        print(f"reaction moment on the shaft (tilt held): {(result.reaction_moment.round(4) + 0.0).tolist()} N m")
     return 0
 
 
