@@ -101,7 +101,7 @@ def main():
             runs.append(clock)
         med = lambda key: statistics.median(c.seconds.get(key, 0.0) for c in runs)  # noqa: E731
         loads = bars(name)
-        disp = ", ".join(f"{1e6 * v:.6f}" for v in loads.displacement)
+        disp = ", ".join(f"{round(1e6 * v, 6) + 0.0:.6f}" for v in loads.displacement)
         print(f"| {name} | {med('build'):.3f} | {med('quasi-static'):.3f} ({runs[0].calls.get('quasi-static', 0)}) | "
               f"{med('start'):.3f} | {loads.iterations}, {loads.max_load:.6f}, ({disp}) |")
 
