@@ -255,3 +255,38 @@ def test_a_second_solve_between_updates_keeps_the_energy():
     exu.SolveDynamic(mbs, s)
     stored, made = _energy(brg.temperatures, mbs)
     assert stored == pytest.approx(made, rel=1e-6)
+
+
+def test_the_vibration_command_reports_the_temperatures(tmp_path):
+    """CLI door of ``vibration``: a bearing file with an outer-race notch (the Case Western 6205
+    with 15 um of play) run with ``--thermal`` from the inlet reports its temperatures, the heat
+    into the nodes equal to the loss by place (1e-9), the energy kept (heat made − carried off =
+    stored, 5e-4 %), and draws them; without ``--thermal`` there is nothing to report."""
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing.bearingfile import save_bearing
+
+    fields = {f.name: getattr(CWRU_6205_BEARING, f.name) for f in dataclasses.fields(CWRU_6205_BEARING)
+              if f.name != "contact_angle"}
+    bearing = Bearing.from_clearance(diametral_clearance=15e-6, **fields)
+    save_bearing(BearingSetup(bearing, surface=SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))),
+                 tmp_path / "notch.toml")
+    png = tmp_path / "vib.png"
+    args = [sys.executable, "-m", "exudyn_bearing", "vibration", "--bearing", str(tmp_path / "notch.toml"),
+            "--rpm", "1797", "--radial", "300", "--time", "0.012", "--settle", "0.002", "--out", str(tmp_path)]
+    proc = subprocess.run(args + ["--thermal", "--initial-temperatures", "inlet", "--plot", str(png), "--json"],
+                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    data = json.loads(proc.stdout)
+    th = data["thermal"]
+    inlet = REFERENCE_LUBRICANT.reference_temperature + 273.15
+    assert th["start"] == "inlet"
+    assert all(v == pytest.approx(inlet) for v in th["start_temperatures_K"].values())
+    made = sum(th["heat_W"].values())
+    assert made > 0 and made == pytest.approx(sum(th["heat_by_place_W"].values()), rel=1e-9)
+    assert made - sum(th["removed_W"].values()) == pytest.approx(th["stored_W"], abs=5e-6 * made)
+    assert data["units"]["thermal"]["temperatures_K"]["oil"] == "K"
+    assert "thermal" in data["inputs"] and data["inputs"]["initial_temperatures"] == "'inlet'"
+    assert (tmp_path / "vib_temperatures.png").stat().st_size > 10_000
+    text = subprocess.run(args + ["--time", "0.004"], capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert text.returncode == 0, text.stderr[-2000:]
+    assert "temperatures" not in text.stdout and json.loads((tmp_path / "vibration.json").read_text())["thermal"] is None

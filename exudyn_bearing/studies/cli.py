@@ -17,7 +17,7 @@ from ..presets import REFERENCE_BEARING
 from ..setup import FROM_SETUP, BearingSetup
 from ..results.records import assumptions_line, assumptions_record
 from .options import COMMANDS, DefaultsFormatter, join_negative_values
-from .run_report import print_simulation
+from .run_report import plot_temperatures_beside, print_simulation, print_thermal
 
 
 def _setup(args, **changes) -> BearingSetup:
@@ -99,14 +99,7 @@ def _simulate(args) -> int:
         title = f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm"
         plot_run(summary.results, args.plot, title=title)
         data["plot"] = str(args.plot)
-        if summary.thermal is not None:
-            from pathlib import Path
-
-            from ..results.temperatures import plot_temperatures
-
-            path = Path(args.plot)
-            data["temperature_plot"] = str(path.with_name(path.stem + "_temperatures.png"))
-            plot_temperatures(summary.thermal, data["temperature_plot"], title=title)
+        plot_temperatures_beside(data, summary.thermal, args.plot, title)
     if args.json:
         json.dump(data, sys.stdout, indent=1)
         print()
@@ -143,7 +136,7 @@ def _vibration(args) -> int:
 
     if args.axial == 0 and args.radial == 0:
         raise ValueError("no load: give --axial and/or --radial, N (both default to 0)")
-    setup = _housed_setup(args)
+    setup = _thermal(args, _housed_setup(args))
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     with warnings.catch_warnings():  # the surface start's outcome is a line of this command's report
@@ -151,14 +144,15 @@ def _vibration(args) -> int:
         result = vibration(setup, rpm=args.rpm, axial_force=args.axial, radial_force=args.radial, time=args.time,
                            sample_rate=args.sample_rate, settle=args.settle,
                            band=_band(args.band), error_estimate=args.error_estimate, masking=_masking(args),
-                           fluctuation=_fluctuation(args))
+                           fluctuation=_fluctuation(args), initial_temperatures=args.initial_temperatures)
     signal = out / "signal.csv"
     write_signal(result, signal)
     data = result.to_dict() | {"signal": str(signal)}
     if args.plot:
-        plot_vibration(result, args.plot, title=f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm",
-                       envelope_max_hz=args.plot_max)
+        title = f"F_a {args.axial:g} N, F_r {args.radial:g} N, {args.rpm:g} rpm"
+        plot_vibration(result, args.plot, title=title, envelope_max_hz=args.plot_max)
         data["plot"] = str(args.plot)
+        plot_temperatures_beside(data, result.thermal, args.plot, title)
     (out / "vibration.json").write_text(json.dumps(data, indent=1), encoding="utf-8")
     if args.json:
         json.dump(data, sys.stdout, indent=1)
@@ -208,6 +202,8 @@ def _vibration(args) -> int:
               f"envelope line {est['envelope_line_Hz']:.3g} Hz, its amplitude {est['envelope_amplitude_percent']:.2g} % "
               f"(error bound {est['envelope_amplitude_bound_percent']:.2g} %), "
               f"kinematic cage slip {est['kinematic_cage_slip_pp']:.2g} pp")
+    if result.thermal is not None:
+        print_thermal(result.thermal)
     if args.plot:
         print(f"  plot written to {args.plot}")
     return 0

@@ -99,12 +99,7 @@ def _simulate_options(p) -> None:
                         "MODEL.md §12a), rolling (pure rolling), auto (steady where it applies, else rolling)")
     p.add_argument("--plot", metavar="PNG", help="save the paper-style plots of the run (needs the plot extra); "
                    "with temperatures also PNG's name + '_temperatures.png'")
-    p.add_argument("--thermal", action="store_true",
-                   help="integrate the thermal network with the bodies (MODEL.md §14g): the bearing file's "
-                        "[thermal], else its defaults; a file with [thermal] runs it without this flag")
-    p.add_argument("--initial-temperatures", choices=("auto", "steady", "inlet"), default="auto",
-                   help="with temperatures: start from the thermal steady state (pure axial load), every node at "
-                        "the oil inlet, or auto (steady where it applies, else inlet)")
+    _temperature_options(p)
     p.add_argument("--profile", action="store_true",
                    help="split the integration's time: force evaluations, Jacobians, Exudyn's own work and glue")
 
@@ -174,6 +169,16 @@ def _signal_options(p, time: float, per: str = "") -> None:
     p.add_argument("--housing-damping", type=float, help="housing damping ratio (default: the file's, else 0.05)")
 
 
+def _temperature_options(p) -> None:
+    """The thermal network integrated with the bodies (``simulate`` and ``vibration``)."""
+    p.add_argument("--thermal", action="store_true",
+                   help="integrate the thermal network with the bodies (MODEL.md §14g): the bearing file's "
+                        "[thermal], else its defaults; a file with [thermal] runs it without this flag")
+    p.add_argument("--initial-temperatures", choices=("auto", "steady", "inlet"), default="auto",
+                   help="with temperatures: start from the thermal steady state (pure axial load), every node at "
+                        "the oil inlet, or auto (steady where it applies, else inlet)")
+
+
 def _vibration_options(p) -> None:
     """The options of ``vibration``."""
     p.add_argument("--bearing", help="bearing TOML file with [[defect]] / [waviness] (default: the reference bearing)")
@@ -186,7 +191,9 @@ def _vibration_options(p) -> None:
                    help="repeat at half the step and report the changes of the strongest envelope line "
                         "(twice the amplitude's change bounds its error, MODEL.md §13c)")
     p.add_argument("--json", action="store_true", help="print JSON")
-    p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies")
+    p.add_argument("--plot", metavar="PNG", help="signal, spectrum and envelope spectrum with the fault frequencies; "
+                   "with temperatures also PNG's name + '_temperatures.png'")
+    _temperature_options(p)
     p.add_argument("--plot-max", type=float, metavar="HZ", help="the plot's envelope spectrum up to HZ (default: "
                                                                  "5 x the highest of BPFO, BPFI, 2 BSF)")
 

@@ -43,17 +43,8 @@ def print_simulation(data: dict, args) -> None:
               f"a step, {prof['force_evaluation_us']:.0f} us each) {prof['force_evaluations_s']:.2f} s, "
               f"{prof['jacobians']} Jacobians ({prof['jacobian_ms']:.2f} ms each) {prof['jacobians_s']:.2f} s, "
               f"Exudyn's own work and glue {prof['exudyn_and_glue_s']:.2f} s")
-    th = data.get("thermal")
-    if th:
-        nodes = ", ".join(f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})"
-                          for k, v in th["temperatures_K"].items())
-        start = "thermal steady state" if th["start"] == "steady" else "oil inlet temperature"
-        oil, removed = th["contact_oil_temperature_K"], th["removed_W"]
-        print(f"  temperatures (MODEL.md §14g), K     {nodes}; from the {start}")
-        print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {removed['oil_inlet']:.1f} W, "
-              f"to ambient {removed['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
-              f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner {oil['inner']:.2f} K, "
-              f"outer {oil['outer']:.2f} K")
+    if data.get("thermal"):
+        print_thermal(data["thermal"])
     est = data.get("error_estimate")
     if est:
         print(f"  error estimate ({est['method']}, {est['reference_wall_time_s']:.1f} s more wall time):")
@@ -62,3 +53,30 @@ def print_simulation(data: dict, args) -> None:
               f"max inner load {est['max_inner_load']:.3g} N")
     if args.plot:
         print(f"  plots written to {args.plot}")
+
+
+def print_thermal(th: dict) -> None:
+    """Two lines of a run's temperatures (:func:`exudyn_bearing.results.temperatures.thermal_summary`)."""
+    nodes = ", ".join(f"{k.replace('_', ' ')} {v:.2f} ({th['temperature_rise_K'][k]:+.3g})"
+                      for k, v in th["temperatures_K"].items())
+    start = "thermal steady state" if th["start"] == "steady" else "oil inlet temperature"
+    oil, removed = th["contact_oil_temperature_K"], th["removed_W"]
+    print(f"  temperatures (MODEL.md §14g), K     {nodes}; from the {start}")
+    print(f"  heat {sum(th['heat_W'].values()):.1f} W: carried off by the oil {removed['oil_inlet']:.1f} W, "
+          f"to ambient {removed['ambient']:.1f} W, stored {th['stored_W']:.1f} W "
+          f"(balance {th['heat_balance_percent']:.2g} %); contact oil inner {oil['inner']:.2f} K, "
+          f"outer {oil['outer']:.2f} K")
+
+
+def plot_temperatures_beside(data: dict, thermal: dict | None, plot: str, title: str) -> None:
+    """With temperatures, their plot beside the run's ``plot`` (its name + '_temperatures.png'),
+    named in ``data``."""
+    if thermal is None:
+        return
+    from pathlib import Path
+
+    from ..results.temperatures import plot_temperatures
+
+    path = Path(plot)
+    data["temperature_plot"] = str(path.with_name(path.stem + "_temperatures.png"))
+    plot_temperatures(thermal, data["temperature_plot"], title=title)

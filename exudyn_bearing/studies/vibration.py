@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..bearing import Bearing
+from ..results.records import units_of
 from ..setup import FROM_SETUP
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
 
@@ -212,6 +213,9 @@ class VibrationResult:
     band_from: str = "given"
     band_kurtosis: float | None = None
     kurtogram: object = field(repr=False, default=None)
+    #: with the setup's thermal network (MODEL.md §14g): temperatures, heat by place and node, heat
+    #: carried off and stored (:func:`exudyn_bearing.results.temperatures.thermal_summary`); None without
+    thermal: dict | None = None
 
     def to_dict(self) -> dict:
         return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
@@ -220,8 +224,9 @@ class VibrationResult:
                 "envelope_band_from": self.band_from, "envelope_band_kurtosis": self.band_kurtosis,
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
                 "solver": self.solver, "error_estimate": self.error_estimate, "impacts": self.impacts,
-                "amplitudes": AMPLITUDES,
-                "units": {"fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
+                "amplitudes": AMPLITUDES, "thermal": self.thermal,
+                "units": {"thermal": None if self.thermal is None else units_of(self.thermal),
+                          "fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s; peak_N, load_before_N N", "sample_rate_Hz": "Hz",
                           "envelope_band_Hz": "Hz", "envelope_band_kurtosis": "-", "kinematic_cage_slip_percent": "%", "wall_time_s": "s",
                           "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -; "
@@ -236,7 +241,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
               sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | str | None = "auto", settle: float = 0.02,
               surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
               contact_law=FROM_SETUP, cage=FROM_SETUP, ball_drag=FROM_SETUP, masking=None,
-              fluctuation=None) -> VibrationResult:
+              fluctuation=None, initial_temperatures: str = "auto") -> VibrationResult:
     """Run a bearing (inner race driven at ``rpm``, free translation, loaded by ``axial_force`` and
     ``radial_force`` N; outer race on ``housing``, a ``races.HousingModel`` or ``races.Housing(...)``,
     default the setup's, else ``HousingModel()``) for ``time`` s and
@@ -259,7 +264,10 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     :class:`~exudyn_bearing.studies.masking.Masking` (measurement noise, machine lines) added to
     the recorded acceleration before the analysis; None (default): the bearing alone.
     ``fluctuation``: a :class:`~exudyn_bearing.studies.masking.Fluctuation` of the shaft speed
-    and the load (the model's own random slip); None: steady."""
+    and the load (the model's own random slip); None: steady. A setup with a ``thermal`` model
+    integrates its network with the bodies from ``initial_temperatures`` ('auto', 'steady',
+    'inlet'; the builder's ``initialTemperatures``, MODEL.md §14g), and ``thermal`` says where
+    the heat went (:func:`~exudyn_bearing.results.temperatures.thermal_summary`)."""
     import exudyn as exu
 
     from ..bearingfile import as_setup
@@ -282,7 +290,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     vary = fluctuation or Fluctuation()
     handle = CreateAngularContactBearing(mbs, setup, innerRace=Driven(vary.speed(rpm)), outerRace=housing,
                                          axialForce=vary.load(axial_force), radialForce=vary.load(radial_force),
-                                         show=False)
+                                         initialTemperatures=initial_temperatures, show=False)
     sensors = handle.AddVibrationSensors(mbs)
     mbs.Assemble()
     period = 1.0 / sample_rate
@@ -327,6 +335,11 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     events = _passage_events(handle, mbs, results, surface)
+    thermal = None
+    if handle.temperatures is not None:
+        from ..results.temperatures import thermal_summary
+
+        thermal = thermal_summary(handle.temperatures, mbs)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step,
                            **({} if masking is None else {"masking": masking}),
@@ -344,11 +357,12 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "defect_reach_m": defect_reaches(bearing, surface, loads) if loads is not None else [],
                            "surface_start": (handle.connector.surface_start or {}).get("message")},
                           impacts=impact_summary(events), band_from=band_from,
-                          band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart)
+                          band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart,
+                          thermal=thermal)
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
-                          fluctuation=fluctuation,
+                          fluctuation=fluctuation, initial_temperatures=initial_temperatures,
                           settings=replace(settings, step=0.5 * coarse,
                                            passage_step=0.5 * step if step < coarse else None))
         out.error_estimate = _error_estimate(out, finer, 0.5 * step)
