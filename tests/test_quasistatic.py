@@ -313,5 +313,11 @@ def test_a_warm_start_pose_gives_the_same_distribution():
     np.testing.assert_allclose(warm.inner_load, cold.inner_load, rtol=0, atol=1e-8 * cold.max_load)
     np.testing.assert_allclose(warm.displacement, cold.displacement, rtol=0, atol=1e-12)
     assert warm.iterations < cold.iterations
-    with pytest.raises(ValueError, match="start_pose"):
-        solve_load_distribution(B, axial_force=400.0, start_pose=(0.0, np.nan, 0.0))
+    held = solve_load_distribution(B, axial_force=400.0, radial_force=100.0, rpm=1800.0,
+                                   start_pose=(*cold.displacement, 1e-3, -1e-3))  # no moment: the tilt stays 0
+    np.testing.assert_allclose(held.inner_load, cold.inner_load, rtol=0, atol=1e-8 * cold.max_load)
+    assert np.all(held.tilt == 0.0)
+    for bad in (dict(start_pose=(0.0, np.nan, 0.0)), dict(start_pose=(0.0, 0.0, 0.0), mode="fixed-angle"),
+                dict(start_pose=(0.0, 0.0, 0.0), displacement=(0.0, 0.0, 1e-6))):
+        with pytest.raises(ValueError, match="start_pose"):
+            solve_load_distribution(B, axial_force=400.0, **bad)

@@ -144,9 +144,11 @@ class _Balance:
         return self.grooves if b == 1 else tuple(np.tile(g, b) for g in self.grooves)
 
     def signs_of(self, b):
+        """The contacts' race signs (−1 inner, +1 outer) for ``b`` states at once."""
         return self.signs if b == 1 else np.tile(self.signs, b)
 
     def params_of(self, b):
+        """The contacts' :class:`~contact.ballrace.RaceContact` for ``b`` states at once."""
         p = self.params
         return p if b == 1 else replace(p, conformity=np.tile(p.conformity, b), race=np.tile(p.race, b))
 

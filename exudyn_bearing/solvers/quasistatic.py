@@ -141,8 +141,10 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
         run measured, or each ball's own orbital speed (geometric mode); default: the
         nominal pure-rolling speed at ``rpm`` (P19, nominal contact angle).
     start_pose : (dx, dy, dz[, theta_x, theta_y]), optional
-        Inner-race pose (m, rad) to start the balance from (geometric mode), e.g. the
-        solution at a nearby load or cage speed; default: the fixed-angle answer (§4).
+        Inner-race pose (m, rad) to start the balance from (geometric mode, not with
+        ``displacement``), e.g. the solution at a nearby load or cage speed; its tilt only
+        where a ``moment`` frees it, its axial part not with ``hold_axial``; default: the
+        fixed-angle answer (§4).
 
     Raises
     ------
@@ -175,6 +177,12 @@ def solve_load_distribution(bearing: Bearing | BearingSetup | str, axial_force: 
     if axial_force == 0 and radial_force > 0 and not hold_axial and mode == "fixed-angle":
         raise ValueError("axial: with fixed contact angles an angular-contact bearing has no equilibrium under "
                          "radial load alone; give an axial force or hold_axial=True")
+    if start_pose is not None and (mode != "geometric" or displacement is not None):
+        raise ValueError("start_pose starts the geometric balance; "
+                         + ("the fixed-angle mode has no pose to start from" if mode != "geometric" else
+                            "with a prescribed displacement there is nothing to balance"))
+    if start_pose is not None and moment is None and len(start_pose) == 5:
+        start_pose = (*start_pose[:3], 0.0, 0.0)  # without a moment the tilt is held at zero
     cage = _cage_speed(bearing, cage_speed, rpm, outer_rpm, mode)
     centrifugal = bearing.ball_mass * bearing.pitch_radius * cage ** 2
     z = bearing.balls
