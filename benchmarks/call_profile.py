@@ -13,6 +13,7 @@ The phases are timed by wrapping the package's own functions in this process (no
 overhead would bend the shares); what is not wrapped is in "rest".
 """
 import argparse
+from contextlib import contextmanager
 
 import exudyn as exu
 
@@ -31,32 +32,38 @@ CASES = {"a": ("reference, 1.3 kN axial, 1800 rpm", 1300.0, 0.0, 1800.0),
 def one_call(axial, radial, rpm, sim_time, clock):
     """A ``simulate`` call's steps (exudyn_bearing.simulation.runner.simulate) with the clock on
     them; returns the integration's step count."""
-    patched = {(start_module, "solve_load_distribution"): "quasi-static load distribution",
-               (start_module, "steady_start"): "steady / quasi-dynamic start"}
+    with start_timed(clock), clock.phase("whole call"):
+        with clock.phase("build"):
+            mbs = exu.SystemContainer().AddSystem()
+            handle = builder.CreateAngularContactBearing(mbs, BearingSetup(REFERENCE_BEARING),
+                                                         innerRace=races.Driven(rpm), axialForce=axial,
+                                                         radialForce=radial, show=False)
+        con = handle.connector
+        con.residual_forces = clock.wrap("force evaluations", con.residual_forces)
+        con.jacobian = clock.wrap("Jacobians", con.jacobian)
+        with clock.phase("assembly"):
+            mbs.Assemble()
+        with clock.phase("integration"):
+            info = run_solver(mbs, [handle], sim_time,
+                              with_surface_step(SolverSettings(progress=False), handle, rpm))
+        with clock.phase("outputs"):
+            handle.Results(mbs).summary()
+    return info.steps
+
+
+@contextmanager
+def start_timed(clock, quasi_static="quasi-static load distribution", start="steady / quasi-dynamic start"):
+    """Within it, the builder's quasi-static load distribution and its steady or quasi-dynamic
+    start (every call) timed on ``clock`` under these names."""
+    patched = {(start_module, "solve_load_distribution"): quasi_static, (start_module, "steady_start"): start}
     saved = {key: getattr(*key) for key in patched}
     for (module, attr), name in patched.items():
         setattr(module, attr, clock.wrap(name, getattr(module, attr)))
     try:
-        with clock.phase("whole call"):
-            with clock.phase("build"):
-                mbs = exu.SystemContainer().AddSystem()
-                handle = builder.CreateAngularContactBearing(mbs, BearingSetup(REFERENCE_BEARING),
-                                                             innerRace=races.Driven(rpm), axialForce=axial,
-                                                             radialForce=radial, show=False)
-            con = handle.connector
-            con.residual_forces = clock.wrap("force evaluations", con.residual_forces)
-            con.jacobian = clock.wrap("Jacobians", con.jacobian)
-            with clock.phase("assembly"):
-                mbs.Assemble()
-            with clock.phase("integration"):
-                info = run_solver(mbs, [handle], sim_time,
-                                  with_surface_step(SolverSettings(progress=False), handle, rpm))
-            with clock.phase("outputs"):
-                handle.Results(mbs).summary()
+        yield clock
     finally:
         for key, function in saved.items():
             setattr(*key, function)
-    return info.steps
 
 
 def report(name, text, clock, steps):

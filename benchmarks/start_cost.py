@@ -13,14 +13,14 @@ import exudyn as exu
 import numpy as np
 
 import exudyn_bearing.model.builder as builder
-import exudyn_bearing.model.start_state as start_module
-from exudyn_bearing import races
-from exudyn_bearing import Bearing
+from exudyn_bearing import Bearing, races
 from exudyn_bearing.presets import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, REFERENCE_BEARING,
                                     SPINDLE_40MM_BEARING)
 from exudyn_bearing.setup import BearingSetup
 from exudyn_bearing.simulation.profile import Clock
 from exudyn_bearing.solvers.quasistatic import solve_load_distribution
+
+from call_profile import start_timed  # (run from benchmarks/: the script's folder is on the path)
 
 #: a user's 7205-type bearing (tests/helpers.py BEARING_7205)
 BEARING_7205 = Bearing(balls=13, ball_diameter=0.007938, pitch_diameter=0.0385, inner_conformity=0.52,
@@ -60,19 +60,10 @@ CASES = {"ref-axial": ("reference", 1300.0, 0.0, 1800.0),
 def one_build(case, clock):
     bearing, axial, radial, rpm = CASES[case]
     setup = _setup(bearing)
-    patched = {(start_module, "solve_load_distribution"): "quasi-static",
-               (start_module, "steady_start"): "start"}
-    saved = {key: getattr(*key) for key in patched}
-    for (module, attr), name in patched.items():
-        setattr(module, attr, clock.wrap(name, getattr(module, attr)))
-    try:
-        with clock.phase("build"):
-            mbs = exu.SystemContainer().AddSystem()
-            builder.CreateAngularContactBearing(mbs, setup, innerRace=races.Driven(rpm), axialForce=axial,
-                                                radialForce=radial, show=False)
-    finally:
-        for key, function in saved.items():
-            setattr(*key, function)
+    with start_timed(clock, quasi_static="quasi-static", start="start"), clock.phase("build"):
+        mbs = exu.SystemContainer().AddSystem()
+        builder.CreateAngularContactBearing(mbs, setup, innerRace=races.Driven(rpm), axialForce=axial,
+                                            radialForce=radial, show=False)
 
 
 def bars(case):

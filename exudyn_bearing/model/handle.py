@@ -231,3 +231,13 @@ class BearingHandle:
 
         t, q, q_t = self.States(mbs)
         return compute_results(self, t[::stride], q[::stride], q_t[::stride])
+
+    def ThermalSummary(self, mbs) -> dict | None:
+        """The run's temperatures and where its heat went
+        (:func:`exudyn_bearing.results.temperatures.thermal_summary`, MODEL.md §14g); None
+        for a bearing without a thermal network."""
+        if self.temperatures is None:
+            return None
+        from ..results.temperatures import thermal_summary
+
+        return thermal_summary(self.temperatures, mbs)

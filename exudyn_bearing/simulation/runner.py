@@ -384,11 +384,7 @@ def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
     integrated = _time.perf_counter()
     results = handle.Results(mbs)
     summary = results.summary()
-    thermal = None
-    if handle.temperatures is not None:
-        from ..results.temperatures import thermal_summary
-
-        thermal = thermal_summary(handle.temperatures, mbs)
+    thermal = handle.ThermalSummary(mbs)
     done = _time.perf_counter()
     call = {"build": built - called, "assembly": assembled - built, "integration": integrated - assembled,
             "outputs": done - integrated}

@@ -132,25 +132,21 @@ class _Balance:
         states = [self._motion(x) for x in xs]
         b = len(states)
         stack = lambda k: np.concatenate([state[k] for state in states])  # noqa: E731
+        grooves, signs, params = self.contacts_of(b)
         kin = ball_race_kinematics(stack("both"), stack("v"), stack("w"), stack("origin"), np.eye(3), np.zeros(3),
-                                   np.tile(self.race_omega, (b, 1)), self.grooves_of(b), self.b.ball_radius,
-                                   self.signs_of(b))
-        f = ball_race_forces(kin, self.params_of(b), self.lub, self.law, self.terms)
+                                   np.tile(self.race_omega, (b, 1)), grooves, self.b.ball_radius, signs)
+        f = ball_race_forces(kin, params, self.lub, self.law, self.terms)
         return [self._balance(state, f.force[2 * z * i:2 * z * (i + 1)], f.moment[2 * z * i:2 * z * (i + 1)])
                 for i, state in enumerate(states)]
 
-    def grooves_of(self, b):
-        """The contacts' groove records for ``b`` states at once."""
-        return self.grooves if b == 1 else tuple(np.tile(g, b) for g in self.grooves)
-
-    def signs_of(self, b):
-        """The contacts' race signs (−1 inner, +1 outer) for ``b`` states at once."""
-        return self.signs if b == 1 else np.tile(self.signs, b)
-
-    def params_of(self, b):
-        """The contacts' :class:`~contact.ballrace.RaceContact` for ``b`` states at once."""
+    def contacts_of(self, b):
+        """(groove records, race signs, :class:`~contact.ballrace.RaceContact`) of the
+        contacts of ``b`` states at once: each race record repeated per state."""
+        if b == 1:
+            return self.grooves, self.signs, self.params
         p = self.params
-        return p if b == 1 else replace(p, conformity=np.tile(p.conformity, b), race=np.tile(p.race, b))
+        return (tuple(np.tile(g, b) for g in self.grooves), np.tile(self.signs, b),
+                replace(p, conformity=np.tile(p.conformity, b), race=np.tile(p.race, b)))
 
     def _motion(self, x):
         """The unknowns ``x`` unpacked with the balls' contact inputs (both races' contacts)."""

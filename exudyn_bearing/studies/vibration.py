@@ -335,11 +335,7 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     f_env, a_env = envelope_spectrum(signal, sample_rate, band)  # (its lines lie below the band's width)
     f_sp, a_sp = amplitude_spectrum(signal, sample_rate)
     events = _passage_events(handle, mbs, results, surface)
-    thermal = None
-    if handle.temperatures is not None:
-        from ..results.temperatures import thermal_summary
-
-        thermal = thermal_summary(handle.temperatures, mbs)
+    thermal = handle.ThermalSummary(mbs)
     inputs = handle.Inputs(rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                            sample_rate=sample_rate, housing=housing, band=requested, settle=settle, step=step,
                            **({} if masking is None else {"masking": masking}),
