@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["UNLOAD_SHARE", "series_approach", "passage_marks"]
+__all__ = ["UNLOAD_SHARE", "series_approach", "passage_marks", "length_from_spacing"]
 
 #: the share of its load a contact has lost where it "starts to unload" (eq. 13.8)
 UNLOAD_SHARE = 0.05
@@ -64,3 +64,23 @@ def passage_marks(length: float, reach: float, rolling_radius: float, approach: 
     else:
         u = min(math.sqrt(rolling_radius * approach), math.sqrt(reach * (2.0 * rolling_radius - reach)))
     return x_e, length - min(u, 0.5 * length)
+
+
+def length_from_spacing(spacing: float, speed: float, rolling_radius: float, approach: float,
+                        unload_share: float = UNLOAD_SHARE) -> float:
+    """The length L m of a spall over which a ball loses its load, from the time ``spacing`` s
+    between its unloading and its strike at the contact's ``speed`` m/s over the race: eq. 13.8
+    inverted (eq. 13.10), v Δt = x_i − x_e with x_e = √(g (2R_x − g)) and L − x_i =
+    min(u, L/2), u = √(δ_t (2R_x − δ_t)): L = v Δt + x_e + u, or 2 (v Δt + x_e) where that is
+    shorter than 2u (the ball struck at the middle). ``rolling_radius`` R_x m of the race,
+    ``approach`` δ_t m (:func:`series_approach` at the ball's load before the spall)."""
+    for name, value in (("spacing", spacing), ("speed", speed), ("rolling_radius", rolling_radius),
+                        ("approach", approach)):
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"{name} must be positive, got {value!r}")
+    if approach >= rolling_radius:
+        raise ValueError(f"approach {approach!r} m must be below rolling_radius {rolling_radius!r} m")
+    x_e, _ = passage_marks(1.0, 1.0, rolling_radius, approach, unload_share)  # reach >= δ_t: unloaded
+    u = math.sqrt(approach * (2.0 * rolling_radius - approach))
+    travel = speed * spacing + x_e
+    return travel + u if travel >= u else 2.0 * travel

@@ -522,6 +522,9 @@ def test_vibration_cli_writes_the_issue_json(tmp_path):
     solver = data["solver"]
     assert solver["step_cuts"] == len(solver["cut_times_s"]) and 0 <= solver["passages_cut"] <= solver["passages"]
     assert solver["passages"] == len(events) and f"{solver['step_cuts']} step cuts" in text.stdout
+    # the spall is not sized from a 20-kHz record (its strikes' band needs 50 kHz): said, not guessed
+    assert data["spall_size"]["length_m"] is None and "50000 Hz" in data["spall_size"]["message"]
+    assert "spall size from the signal: not read" in text.stdout
 
 
 def test_passages_cut_counts_the_passages_a_cut_follows():

@@ -17,6 +17,7 @@ import numpy as np
 from ..bearing import Bearing
 from ..results.records import units_of
 from ..setup import FROM_SETUP
+from .spall_size import spall_size
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
@@ -216,6 +217,9 @@ class VibrationResult:
     #: with the setup's thermal network (MODEL.md §14g): temperatures, heat by place and node, heat
     #: carried off and stored (:func:`exudyn_bearing.results.temperatures.thermal_summary`); None without
     thermal: dict | None = None
+    #: an outer-race spall sized from the signal alone by its double impulse (MODEL.md eq. 13.10,
+    #: :func:`~exudyn_bearing.studies.spall_size.spall_size`) beside its true length; None otherwise
+    spall_size: dict | None = None
 
     def to_dict(self) -> dict:
         return {"fault_frequencies_Hz": self.fault_frequencies, "envelope_peaks_Hz": self.envelope_peaks,
@@ -224,7 +228,7 @@ class VibrationResult:
                 "envelope_band_from": self.band_from, "envelope_band_kurtosis": self.band_kurtosis,
                 "kinematic_cage_slip_percent": self.kinematic_cage_slip_percent, "wall_time_s": self.wall_time_s,
                 "solver": self.solver, "error_estimate": self.error_estimate, "impacts": self.impacts,
-                "amplitudes": AMPLITUDES, "thermal": self.thermal,
+                "amplitudes": AMPLITUDES, "thermal": self.thermal, "spall_size": self.spall_size,
                 "units": {"thermal": None if self.thermal is None else units_of(self.thermal),
                           "fault_frequencies_Hz": "Hz", "envelope_peaks_Hz": "[Hz, m/s^2]",
                           "spectrum_peaks_Hz": "[Hz, m/s^2]", "defect_events": "s; peak_N, load_before_N N", "sample_rate_Hz": "Hz",
@@ -232,6 +236,8 @@ class VibrationResult:
                           "solver": "step_s, cut_times_s in s; counts; strike_number, reach_share -; "
                                     "defect_reach_m [reach, approach] m",
                           "error_estimate": "Hz, %, pp, s", "impacts": "s; N",
+                          "spall_size": "length_m, true_length_m, approach_m m; spacing_s s; speed_m_s m/s; "
+                                        "ball_load_N N; error_percent %; high_band_Hz Hz",
                           "signal": "t s; acceleration m/s^2, velocity m/s, displacement m (x, y along the "
                                     "bearing frame's radial axes, z axial)"},
                 "inputs": self.inputs}
@@ -354,7 +360,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                            "surface_start": (handle.connector.surface_start or {}).get("message")},
                           impacts=impact_summary(events), band_from=band_from,
                           band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart,
-                          thermal=thermal)
+                          thermal=thermal,
+                          spall_size=spall_size(signal, sample_rate, bearing, surface, faults["actual"]["BPFO"], loads))
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
