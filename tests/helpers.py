@@ -378,3 +378,31 @@ def _inner_contacts(approaches, u_x=0.3, u_y=0.05, spin=20.0, w_c=82.6):
     return np.array(centres), np.array(velocities), np.array(omegas)
 
 
+
+
+# (from tests/test_scene_cli.py and tests/test_spall_size.py)
+def housed_scene_signal(bearing, surface, rpm, radial, end, sample_rate):
+    """The README's vibration scene: the shaft held at ``rpm``, ``radial`` N, the outer race on a
+    3-kHz, 2-kg housing, solved by ``mbs.SolveDynamic`` at the handle's recommended step (at most
+    the sample period) and tolerance, the housing's acceleration written at every step and
+    recorded by ``sampled_signal``. Returns (t s, the acceleration along the radial load m/s²,
+    the step s, the handle, mbs)."""
+    from exudyn_bearing.studies.vibration import sampled_signal
+
+    mbs = exu.SystemContainer().AddSystem()
+    h = CreateAngularContactBearing(mbs, bearing, innerRace=races.Driven(rpm), radialForce=radial,
+                                    outerRace=races.Housing(frequency=3000, mass=2), surface=surface, show=False)
+    acc = h.AddVibrationSensors(mbs, outputs=("Acceleration",))["Acceleration"]
+    mbs.Assemble()
+    step = min(h.RecommendedStep(), h.RecommendedSurfaceStep(rpm), 1 / sample_rate)
+    s = exu.SimulationSettings()
+    s.timeIntegration.endTime = end
+    s.timeIntegration.numberOfSteps = round(end / step)
+    s.timeIntegration.newton.absoluteTolerance = h.RecommendedAbsoluteTolerance()
+    s.timeIntegration.verboseMode = 0
+    s.solution.sensors.writePeriod = step
+    s.solution.file.write = False
+    mbs.SolveDynamic(s)
+    data = np.asarray(mbs.GetSensorStoredData(acc))
+    t, x = sampled_signal(data[:, 0], data[:, 1], sample_rate)  # x: along the radial load
+    return t, x, step, h, mbs

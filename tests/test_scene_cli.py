@@ -8,7 +8,6 @@ import json
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 from contact.surface import Defect, SurfaceModel
@@ -21,27 +20,11 @@ NOTCH = SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),))
 
 
 def _scene_line():
-    """The README's scene: the shaft held at its speed, the outer race on a housing, the
-    housing's acceleration written at every step, recorded by ``sampled_signal``."""
-    from exudyn_bearing import CreateAngularContactBearing, races
-    from exudyn_bearing.studies.vibration import envelope_spectrum, sampled_signal, spectral_peaks
+    """The README's scene (``tests.helpers.housed_scene_signal``) read in the CLI's band."""
+    from exudyn_bearing.studies.vibration import envelope_spectrum, spectral_peaks
+    from tests.helpers import housed_scene_signal
 
-    mbs = exu.SystemContainer().AddSystem()
-    h = CreateAngularContactBearing(mbs, CWRU_6205_BEARING, innerRace=races.Driven(RPM), radialForce=300.0,
-                                    outerRace=races.Housing(frequency=3000, mass=2), surface=NOTCH, show=False)
-    acc = h.AddVibrationSensors(mbs, outputs=("Acceleration",))["Acceleration"]
-    mbs.Assemble()
-    step = min(h.RecommendedStep(), h.RecommendedSurfaceStep(RPM), 1 / FS)
-    s = exu.SimulationSettings()
-    s.timeIntegration.endTime = T
-    s.timeIntegration.numberOfSteps = round(T / step)
-    s.timeIntegration.newton.absoluteTolerance = h.RecommendedAbsoluteTolerance()
-    s.timeIntegration.verboseMode = 0
-    s.solution.sensors.writePeriod = step
-    s.solution.file.write = False
-    mbs.SolveDynamic(s)
-    data = np.asarray(mbs.GetSensorStoredData(acc))
-    t, x = sampled_signal(data[:, 0], data[:, 1], FS)  # x: the radial load's direction
+    t, x, step, _, _ = housed_scene_signal(CWRU_6205_BEARING, NOTCH, RPM, 300.0, T, FS)
     f, a = envelope_spectrum(x[t >= 0.02], FS, BAND)
     return spectral_peaks(f, a, 1, min_hz=1.0, max_hz=BAND[1] - BAND[0])[0], step
 

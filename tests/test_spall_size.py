@@ -124,3 +124,37 @@ def test_simulated_outer_spalls_are_sized_within_15_percent(length):
     assert again == pytest.approx(length, rel=0.15)
     # the dynamic run's own contact load (entry to the fastest rise) agrees with the signal's spacing
     assert size["spacing_s"] == pytest.approx(r.impacts["entry_to_impact_s"], rel=0.3)
+
+
+@pytest.mark.slow
+def test_cli_and_plain_scene_size_the_spall(tmp_path):
+    """The other two doors on the 2-mm spall of the test above: ``vibration --json`` from a
+    bearing file, and a plain Exudyn scene solved by ``mbs.SolveDynamic`` at the handle's surface
+    step whose housing sensor, recorded at 50 kHz by ``sampled_signal``, is read by
+    :func:`spall_size` with the run's actual BPFO (about 60 s)."""
+    import json
+    import subprocess
+    import sys
+
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing.bearingfile import BearingFile, save_bearing
+    from exudyn_bearing.studies.spall_size import spall_size
+    from exudyn_bearing.studies.vibration import actual_fault_frequencies
+    from tests.helpers import housed_scene_signal
+
+    bearing, length, rpm, fs, end = _twelve_ball(), 2e-3, 1200.0, 50000.0, 0.15
+    surface = SurfaceModel((Defect("outer", 0.0, length, 0.5e-3),))
+    path = tmp_path / "spall.toml"
+    save_bearing(BearingFile(bearing, surface=surface), path)
+    proc = subprocess.run([sys.executable, "-m", "exudyn_bearing", "vibration", "--bearing", str(path), "--rpm",
+                           str(rpm), "--radial", "500", "--time", str(end), "--sample-rate", str(fs),
+                           "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, proc.stderr
+    cli = json.loads((tmp_path / "o" / "vibration.json").read_text())["spall_size"]
+    assert cli["length_m"] == pytest.approx(length, rel=0.15) and "spall size from the signal alone" in proc.stdout
+
+    t, x, _, h, mbs = housed_scene_signal(bearing, surface, rpm, 500.0, end, fs)
+    results = h.Results(mbs, stride=10)
+    bpfo = actual_fault_frequencies(results)["BPFO"]
+    scene = spall_size(x[t >= 0.02], fs, bearing, surface, bpfo, h.initialLoads)
+    assert scene["length_m"] == pytest.approx(length, rel=0.15), scene
