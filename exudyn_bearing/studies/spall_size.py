@@ -31,6 +31,7 @@ double impulse).
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -135,7 +136,7 @@ def double_impulse(signal, sample_rate: float, fault_hz: float, high_band: tuple
     if x.ndim != 1 or not np.all(np.isfinite(x)):
         raise ValueError("signal must be a finite 1-D array")
     for name, value in (("sample_rate", sample_rate), ("fault_hz", fault_hz)):
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+        if not (isinstance(value, numbers.Real) and math.isfinite(value) and value > 0):
             raise ValueError(f"{name} must be a positive number, got {value!r}")
     period = 1.0 / fault_hz
     if x.size / sample_rate < 4.5 * period:

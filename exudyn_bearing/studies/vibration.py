@@ -17,8 +17,8 @@ import numpy as np
 from ..bearing import Bearing
 from ..results.records import units_of
 from ..setup import FROM_SETUP
-from .spall_size import spall_size
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
+from .spall_size import spall_size
 
 __all__ = ["FAULTS", "kinematic_fault_frequencies", "rolling_fault_frequencies", "actual_fault_frequencies", "amplitude_spectrum",
            "sampled_signal", "check_band", "check_band_choice", "envelope_spectrum", "spectral_peaks", "defect_events", "ball_defect_events", "passages_cut", "VibrationResult",
@@ -273,7 +273,9 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
     and the load (the model's own random slip); None: steady. A setup with a ``thermal`` model
     integrates its network with the bodies from ``initial_temperatures`` ('auto', 'steady',
     'inlet'; the builder's ``initialTemperatures``, MODEL.md §14g), and ``thermal`` says where
-    the heat went (:func:`~exudyn_bearing.results.temperatures.thermal_summary`)."""
+    the heat went (:func:`~exudyn_bearing.results.temperatures.thermal_summary`). A surface with
+    one outer-race spall has it sized from the analysed signal alone in ``spall_size`` (MODEL.md
+    eq. 13.10; a ``sample_rate`` of at least 50 kHz)."""
     import exudyn as exu
 
     from ..bearingfile import as_setup
