@@ -11,7 +11,14 @@ from contact.geometry import contact_path_radius
 from ..bearing import Bearing
 
 __all__ = ["defect_reaches", "defect_events", "ball_defect_events", "passages_cut", "read_impacts",
-           "impact_summary"]
+           "impact_summary", "ball_approach"]
+
+
+def ball_approach(bearing: Bearing, load: float) -> float:
+    """δ_t m: a ball's two Hertz approaches in series at the load ``load`` N on both contacts,
+    at the nominal contact angle (MODEL.md eq. 13.8, :func:`contact.defect_passage.series_approach`)."""
+    stiffness = (float(bearing.hertz(bearing.contact_angle, k).stiffness) for k in ("inner", "outer"))
+    return series_approach(load, *stiffness)
 
 
 def defect_reaches(bearing: Bearing, surface, loads) -> list:
@@ -193,8 +200,7 @@ def _estimate(connector, event, race, load_before, share) -> dict:
     if not load_before > 0:
         return {"entry_estimate_s": None, "impact_estimate_s": None}
     r_x, r_y = (float(v) for v in bearing.curvature_radii(bearing.contact_angle, race))
-    stiffness = (float(bearing.hertz(bearing.contact_angle, k).stiffness) for k in ("inner", "outer"))
-    x_e, x_i = passage_marks(d.length, d.reach(r_x, r_y), r_x, series_approach(load_before, *stiffness), share)
+    x_e, x_i = passage_marks(d.length, d.reach(r_x, r_y), r_x, ball_approach(bearing, load_before), share)
     per_metre = (event["exit_s"] - event["edge_s"]) / d.length
     return {"entry_estimate_s": None if x_e is None else event["edge_s"] + x_e * per_metre,
             "impact_estimate_s": event["edge_s"] + x_i * per_metre}

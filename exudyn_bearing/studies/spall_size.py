@@ -36,6 +36,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from contact.defect_passage import length_from_spacing
+from contact.geometry import contact_path_radius
+
+from .passages import ball_approach
+
 __all__ = ["DoubleImpulse", "double_impulse", "spall_size", "HIGH_BAND_HZ", "MIN_SAMPLE_RATE_HZ", "ENTRY_SHARE",
            "BASELINE_FACTOR", "RMS_WINDOW_S"]
 
@@ -185,13 +190,10 @@ def spall_size(signal, sample_rate: float, bearing, surface, bpfo_hz: float, loa
     ball's pit strikes both races: not read). Returns {"length_m", "true_length_m",
     "error_percent", "spacing_s", "speed_m_s", "ball_load_N", "approach_m", "passages",
     "high_band_Hz", "message"}; the length and error are None where no spacing was read."""
-    from contact.defect_passage import length_from_spacing, series_approach
-    from contact.geometry import contact_path_radius
-
-    races = [d for d in surface.defects if d.race != "ball"] if surface is not None else []
-    if len(races) != 1 or races[0].race != "outer" or len(surface.defects) != 1 or loads is None:
+    defects = () if surface is None else surface.defects
+    if len(defects) != 1 or defects[0].race != "outer" or loads is None:
         return None
-    d = races[0]
+    d = defects[0]
     try:
         if sample_rate < MIN_SAMPLE_RATE_HZ:
             raise ValueError(f"not read: sizing reads the strikes in {HIGH_BAND_HZ[0]:g}-{HIGH_BAND_HZ[1]:g} Hz and "
@@ -203,8 +205,7 @@ def spall_size(signal, sample_rate: float, bearing, surface, bpfo_hz: float, loa
     speed = 2.0 * math.pi * bpfo_hz / bearing.balls * rho
     load = float(np.interp(math.radians(d.angle_deg), np.asarray(loads.azimuth, dtype=float),
                            np.asarray(loads.outer_load, dtype=float), period=2.0 * math.pi))
-    stiffness = [float(bearing.hertz(bearing.contact_angle, k).stiffness) for k in ("inner", "outer")]
-    approach = series_approach(load, *stiffness)
+    approach = ball_approach(bearing, load)
     r_x = float(bearing.curvature_radii(bearing.contact_angle, "outer")[0])
     length = None
     if found.spacing_s is not None and approach > 0:
