@@ -156,5 +156,5 @@ def test_cli_and_plain_scene_size_the_spall(tmp_path):
     t, x, _, h, mbs = housed_scene_signal(bearing, surface, rpm, 500.0, end, fs)
     results = h.Results(mbs, stride=10)
     bpfo = actual_fault_frequencies(results)["BPFO"]
-    scene = spall_size(x[t >= 0.02], fs, bearing, surface, bpfo, h.initialLoads)
+    scene = spall_size(x[t >= 0.02], fs, bearing, surface, bpfo_hz=bpfo, loads=h.initialLoads)
     assert scene["length_m"] == pytest.approx(length, rel=0.15), scene

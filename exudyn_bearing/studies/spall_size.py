@@ -180,7 +180,7 @@ def double_impulse(signal, sample_rate: float, fault_hz: float, high_band: tuple
     return DoubleImpulse(spacing, strikes, lags, profile, int(strikes.size), message)
 
 
-def spall_size(signal, sample_rate: float, bearing, surface, bpfo_hz: float, loads) -> dict | None:
+def spall_size(signal, sample_rate: float, bearing, surface, *, bpfo_hz: float, loads) -> dict | None:
     """The outer-race spall of ``surface`` sized from ``signal`` alone (eq. 13.10): its double
     impulse's spacing (:func:`double_impulse` at the run's actual ``bpfo_hz``) times the contact's
     speed over the race, v = 2π (BPFO / Z) ρ_o, plus eq. 13.8's offsets at the ball's quasi-static

@@ -363,7 +363,8 @@ def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: fl
                           impacts=impact_summary(events), band_from=band_from,
                           band_kurtosis=None if chart is None else chart.band_kurtosis, kurtogram=chart,
                           thermal=thermal,
-                          spall_size=spall_size(signal, sample_rate, bearing, surface, faults["actual"]["BPFO"], loads))
+                          spall_size=spall_size(signal, sample_rate, bearing, surface,
+                                                bpfo_hz=faults["actual"]["BPFO"], loads=loads))
     if error_estimate:
         finer = vibration(setup, rpm=rpm, axial_force=axial_force, radial_force=radial_force, time=time,
                           sample_rate=sample_rate, housing=housing, band=band, settle=settle, masking=masking,
