@@ -36,6 +36,7 @@ from .checks import check_displacement, check_force, check_frame, check_races, c
 from .connector import BearingConnector, CageModel
 from .handle import SENSOR_LABELS, SENSOR_OUTPUTS, BearingHandle  # noqa: F401 (re-exported)
 from .predictor import install_predictor
+from .start_residual import StartResidual
 from .sensors import add_state_sensor
 from .start_state import race_pose, start_state
 from .thermal_nodes import UPDATE_PERIOD, BearingTemperatures, thermal_start
@@ -259,13 +260,13 @@ def _add_connector(mbs, connector, nodes, layout, inner, held, steady):
                                           for n in nodes])
     if connector.surface is not None:  # the start carries the surfaces at t = 0 (MODEL.md §13d)
         _settle_surfaces(mbs, connector, nodes, layout, inner, held)
-    ref = connector.reference
+    start = StartResidual(connector, connector.reference)
 
     def force_user_function(mbs_, t, itemNumber, q, q_t):
-        return connector.residual_forces(t, q, q_t)
+        return start.forces(t, q, q_t)
 
     def jacobian_user_function(mbs_, t, itemNumber, q, q_t, f_q, f_qt):
-        return connector.jacobian(t, np.asarray(q) + ref, np.asarray(q_t), f_q, f_qt)
+        return start.jacobian(t, q, q_t, f_q, f_qt)
 
     # the block Jacobian is installed here, so a scene solved by Exudyn's own SolveDynamic
     # (implicit solvers) gets it too; run_solver(jacobian='exudyn') removes it
@@ -273,7 +274,7 @@ def _add_connector(mbs, connector, nodes, layout, inner, held, steady):
                                               jacobianUserFunction=jacobian_user_function))
     # the Newton start from the previous acceleration (MODEL.md §10b), for plain SolveDynamic
     # scenes too; SolverSettings(predictor=False) turns it off for a run_solver run
-    install_predictor(mbs, nodes, steady_start=steady)
+    install_predictor(mbs, nodes, steady_start=steady, start_residual=start)
     return contact
 
 

@@ -38,6 +38,12 @@ __all__ = ["NewtonPredictor", "compose_rotation_vectors", "install_predictor"]
 #: key of the predictor in ``mbs.variables`` (one per system, shared by its bearings)
 VARIABLE = "exudyn_bearing.model.predictor"
 
+#: a step attempt that took this many Newton iterations or more on a Jacobian that had served
+#: at least REFRESH_MIN_AGE step attempts: the next step takes a fresh Jacobian at its
+#: predicted iterate (MODEL.md §10b)
+REFRESH_AFTER_ITERATIONS = 4
+REFRESH_MIN_AGE = 10
+
 
 @njit(cache=True)
 def _compose(theta, omega, out):
@@ -123,13 +129,22 @@ class NewtonPredictor:
         self._step_start = self._h = math.nan
         self._first_solve = False
         self.steady_start = True
+        #: (StartResidual, its connector's nodes) told of each predicted step
+        self.start_residuals: list = []
+        self._iterations = 0  # Newton iterations of the current step attempt
+        self._jacobians = -1  # the solver's Jacobian count at its start
+        self._age = 0  # step attempts the current Jacobian has served without another
 
-    def add_nodes(self, nodes, steady_start: bool = False) -> None:
+    def add_nodes(self, nodes, steady_start: bool = False, start_residual=None) -> None:
         """Predict ``nodes`` too; each node once (bearings on one shaft share its node, and
         a node moved twice would leave q, v and a inconsistent). ``steady_start``: these
-        nodes start from a steady state (their initial accelerations are the motion's)."""
+        nodes start from a steady state (their initial accelerations are the motion's).
+        ``start_residual``: the :class:`~exudyn_bearing.model.start_residual.StartResidual`
+        of the connector on exactly these nodes, told each predicted iterate."""
         self.nodes.extend(n for n in dict.fromkeys(int(n) for n in nodes) if n not in self.nodes)
         self.steady_start = self.steady_start and steady_start
+        if start_residual is not None:
+            self.start_residuals.append((start_residual, [int(n) for n in nodes]))
         self._indices = None
 
     def _coordinates(self, mbs):
@@ -140,7 +155,8 @@ class NewtonPredictor:
             # the bearings' nodes are the whole system (the usual scene): the predicted
             # vectors are set as they are, no other item's Newton iterate to keep
             everything = np.array_equal(np.sort(rows), np.arange(ref.size))
-            self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything)
+            own = [node_rows(mbs, nodes) for _, nodes in self.start_residuals]
+            self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything, own)
         return self._indices
 
     def __call__(self, mbs, t, newtonIt, discontinuousIt):
@@ -152,18 +168,28 @@ class NewtonPredictor:
         if not self.enabled or not self.nodes:
             return
         if newtonIt == 0:
+            # the last attempt converged slowly on a Jacobian that had served many steps:
+            # refresh it (MODEL.md §10b)
+            jacobians = int(solver.it.newtonJacobiCount) if solver is not None else 0
+            self._age = self._age + 1 if jacobians == self._jacobians else 0
+            slow = self._iterations >= REFRESH_AFTER_ITERATIONS and self._age >= REFRESH_MIN_AGE
+            self._iterations, self._jacobians = 0, jacobians
             self._pending = self._predict(mbs, solver, t)
+            if self._pending is not None:
+                self._pending = self._pending + (slow,)
+                self._tell_start_residuals(t)
         elif newtonIt == 1 and self._pending is not None:
-            q_new, v_new, a_new, new_step = self._pending
+            q_new, v_new, a_new, new_step, _, _, slow = self._pending
             self._pending = None
-            if new_step:
+            if new_step or slow:
                 # Exudyn keeps the last Jacobian across a change of step size, whose mass
                 # part scales with 1/h²: from the predicted iterate that stale matrix
-                # diverges (contraction 2 after the step doubled), so take a fresh one here
+                # diverges (contraction 2 after the step doubled), so take a fresh one here;
+                # and after a step that needed many iterations (MODEL.md §10b)
                 self._solver.conv.jacobianUpdateRequested = True
             data = mbs.systemData
             config = _config().Current
-            _, rows, _, everything = self._indices
+            _, rows, _, everything, _ = self._indices
             if not everything:  # other items keep Newton's first iterate
                 q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
                 v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
@@ -176,6 +202,13 @@ class NewtonPredictor:
             self.shifts += 1
         else:
             self._pending = None
+        self._iterations = max(self._iterations, int(newtonIt))
+
+    def _tell_start_residuals(self, t):
+        """Tell each connector's start residual its predicted iterate and increment."""
+        q_new, v_new, a_new, _, beta_prime, gamma_prime, _ = self._pending
+        for (start, _), rows in zip(self.start_residuals, self._indices[4]):
+            start.expect(t, q_new[rows], v_new[rows], a_new[rows] / beta_prime, gamma_prime)
 
     def _count_cut(self, solver, t):
         """A step attempt that ends before the last one of the same solve follows a failed
@@ -212,7 +245,7 @@ class NewtonPredictor:
             self._step_start = step_start
             return None
         self._step_start = step_start
-        starts, _, ref_rot, _ = self._coordinates(mbs)
+        starts, _, ref_rot, _, _ = self._coordinates(mbs)
         data = mbs.systemData
         config = _config()
         # Exudyn's start: the previous step's q and v advanced, zero acceleration everywhere
@@ -222,9 +255,10 @@ class NewtonPredictor:
         a = np.zeros_like(q)
         beta, gamma, alpha_m, alpha_f = self._constants
         beta_prime = (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f))
-        if not _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma / (h * beta), a):
+        gamma_prime = gamma / (h * beta)
+        if not _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma_prime, a):
             return None
-        return q, v, a, new_step
+        return q, v, a, new_step, beta_prime, gamma_prime
 
 
 def _constants(solver):
@@ -242,12 +276,13 @@ def _config():
     return exu.ConfigurationType
 
 
-def install_predictor(mbs, nodes, steady_start: bool = False) -> NewtonPredictor:
+def install_predictor(mbs, nodes, steady_start: bool = False, start_residual=None) -> NewtonPredictor:
     """Add ``nodes`` (Lie-group rotation-vector rigid-body nodes of a bearing) to the
     system's :class:`NewtonPredictor`, creating and installing it as the system's
     ``PreNewtonResidualUserFunction`` on first use (a function already set is chained).
     ``steady_start``: the bearing starts from its steady state (then, if all do, the
-    scene's first step is predicted too)."""
+    scene's first step is predicted too). ``start_residual``: the bearing's
+    :class:`~exudyn_bearing.model.start_residual.StartResidual` (on exactly ``nodes``)."""
     predictor = mbs.variables.get(VARIABLE)
     if not isinstance(predictor, NewtonPredictor):
         try:  # Exudyn 1.13: 0, or {'function': f, 'type': 'Python'}
@@ -259,5 +294,5 @@ def install_predictor(mbs, nodes, steady_start: bool = False) -> NewtonPredictor
         predictor = NewtonPredictor(existing if callable(existing) else None)
         mbs.variables[VARIABLE] = predictor
         mbs.SetPreNewtonResidualUserFunction(predictor)
-    predictor.add_nodes(nodes, steady_start)
+    predictor.add_nodes(nodes, steady_start, start_residual)
     return predictor

@@ -1,0 +1,91 @@
+"""The residual at the start of a predicted Newton step, from the predicted iterate's forces
+and the last Jacobian (MODEL.md §10b).
+
+Exudyn evaluates every force at the zero-acceleration start of a step before its first Newton
+iteration. Where the step is predicted (:mod:`exudyn_bearing.model.predictor`), that residual
+serves one purpose only: its norm is the reference of the relative convergence test (the
+first increment it gives is replaced by the predicted iterate). The predicted iterate lies one
+Exudyn increment δ = a_n/β' from the start, and its forces are the next evaluation anyway. So
+:class:`StartResidual` evaluates the bearing at the predicted iterate when Exudyn asks for the
+start, returns the start's forces linearized from there with the last block Jacobian,
+
+    F(start) ≈ F(predicted) − (∂F/∂q + γ' ∂F/∂q̇) δ,
+
+and serves the predicted iterate's forces, bit for bit the ones just computed, when Exudyn asks
+for them: one evaluation a step fewer, the same Newton path from the predicted iterate on,
+and a convergence reference off by the linearization's error (measured in DEVELOPMENT.md,
+'The start residual from the predicted iterate'). Steps without a prediction, a Jacobian of
+another step size, or a predicted iterate the forces refuse get the exact evaluation.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["StartResidual"]
+
+
+class StartResidual:
+    """A connector's force function for Exudyn (``forces``) and its Jacobian function
+    (``jacobian``) with the start residual of predicted steps linearized (module docstring).
+
+    ``connector``: the :class:`~exudyn_bearing.model.connector.BearingConnector`; ``reference``
+    its nodes' reference coordinates (Exudyn's user functions see q without them)."""
+
+    def __init__(self, connector, reference):
+        self.connector = connector
+        self.reference = reference
+        #: (t s, predicted q and q̇ without reference, increment δ, γ' 1/s) of the next call
+        self._expected = None
+        #: (t, q, q̇, forces) of the predicted iterate, served once
+        self._predicted = None
+        #: (-(∂F/∂q + γ' ∂F/∂q̇), γ') of the last Jacobian
+        self._jacobian = None
+        #: start residuals linearized, and evaluated exactly instead (counts)
+        self.linearized = self.exact = 0
+
+    def expect(self, t, q_predicted, v_predicted, increment, gamma_prime):
+        """The next call is the start residual of a predicted step ending at ``t`` s; the step's
+        predicted iterate (q without reference, q̇) and the increment δ to it (Exudyn's
+        unknowns, m and rad) with γ' = γ/(hβ) 1/s."""
+        self._expected = (t, q_predicted, v_predicted, increment, gamma_prime)
+
+    def forces(self, t, q, q_t):
+        """Exudyn's ``forceUserFunction``: the connector's generalized forces (6 per node slot)
+        for q without reference and q̇."""
+        expected, self._expected = self._expected, None
+        if expected is not None:
+            start = self._linearized(t, expected)
+            if start is not None:
+                return start
+        predicted, self._predicted = self._predicted, None
+        if predicted is not None and t == predicted[0] and np.array_equal(q, predicted[1]) \
+                and np.array_equal(q_t, predicted[2]):
+            return predicted[3]
+        return self.connector.residual_forces(t, q, q_t)
+
+    def jacobian(self, t, q, q_t, f_q, f_qt):
+        """Exudyn's ``jacobianUserFunction`` (q without reference): the block Jacobian
+        -(f_q ∂F/∂q + f_qt ∂F/∂q̇), kept for the start residuals."""
+        jac = self.connector.jacobian(t, np.asarray(q) + self.reference, np.asarray(q_t), f_q, f_qt)
+        self._jacobian = (jac / f_q, f_qt / f_q) if f_q != 0.0 else None
+        return jac
+
+    def _linearized(self, t, expected):
+        """The start residual from the predicted iterate, None where it cannot be had."""
+        t_expected, q_p, v_p, increment, gamma_prime = expected
+        if self._jacobian is None or t != t_expected:
+            self.exact += 1
+            return None
+        stiffness, ratio = self._jacobian
+        if not math.isclose(ratio, gamma_prime, rel_tol=1e-12):  # a Jacobian of another step size
+            self.exact += 1
+            return None
+        f_p = np.array(self.connector.residual_forces(t, q_p, v_p), dtype=float)
+        if not np.all(np.isfinite(f_p)):  # refused (NaN): Exudyn's own start decides
+            self.exact += 1
+            return None
+        self._predicted = (t, q_p, v_p, f_p)
+        self.linearized += 1
+        return f_p + stiffness @ increment
