@@ -65,8 +65,8 @@ def test_the_start_is_the_predicted_forces_expanded_to_first_order():
 
 def test_the_predicted_forces_are_served_once_and_exactly():
     """The forces served at the predicted iterate are the connector's own there, bit for bit,
-    without evaluating again; a second call, another state, or an unexpected start is
-    evaluated."""
+    without evaluating again; a second call is evaluated, and a start without a Jacobian (none
+    yet, another step size's, or the last solve's) is Exudyn's own."""
     _, handle, t, q, v, a, beta_prime, gamma_prime = _running_reference()
     con = handle.connector
     calls = []
@@ -90,6 +90,10 @@ def test_the_predicted_forces_are_served_once_and_exactly():
     assert len(calls) == 4 and np.array_equal(served, evaluate(t, q_p, v_p))
     start.forces(t, q_p, v_p)
     assert len(calls) == 5  # served once only
+    start.reset()  # a new solve: no Jacobian of the last one
+    start.expect(t, q_p, v_p, delta, gamma_prime)
+    start.forces(t, q, v)
+    assert (start.linearized, start.exact) == (1, 3)
 
 
 def test_a_predicted_step_evaluates_the_forces_once_per_newton_iteration():

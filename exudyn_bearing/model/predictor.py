@@ -227,6 +227,8 @@ class NewtonPredictor:
             self._first_solve = self._solver is None
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan
             self._indices = None  # the scene may have been assembled again since the last solve
+            for start, _ in self.start_residuals:  # no Jacobian of another solve
+                start.reset()
         if self._constants is None:
             return None
         it = solver.it

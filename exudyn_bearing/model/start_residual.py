@@ -4,7 +4,8 @@ and the last Jacobian (MODEL.md §10b).
 Exudyn evaluates every force at the zero-acceleration start of a step before its first Newton
 iteration. Where the step is predicted (:mod:`exudyn_bearing.model.predictor`), that residual
 serves one purpose only: its norm is the reference of the relative convergence test (the
-first increment it gives is replaced by the predicted iterate). The predicted iterate lies one
+first increment it gives is replaced by the predicted iterate; in an assembly the items that
+are not a bearing's keep theirs, which the linearized residual moves a little). The predicted iterate lies one
 Exudyn increment δ = a_n/β' from the start, and its forces are the next evaluation anyway. So
 :class:`StartResidual` evaluates the bearing at the predicted iterate when Exudyn asks for the
 start, returns the start's forces linearized from there with the last block Jacobian,
@@ -44,6 +45,10 @@ class StartResidual:
         self._jacobian = None
         #: start residuals linearized, and evaluated exactly instead (counts)
         self.linearized = self.exact = 0
+
+    def reset(self):
+        """Forget the Jacobian, the expected start and the predicted forces (a new solve)."""
+        self._expected = self._predicted = self._jacobian = None
 
     def expect(self, t, q_predicted, v_predicted, increment, gamma_prime):
         """The next call is the start residual of a predicted step ending at ``t`` s; the step's
