@@ -46,7 +46,7 @@ def test_the_start_is_the_predicted_forces_expanded_to_first_order():
     increment's force change at s = 1, a run's real increment."""
     _, handle, t, q, v, a, beta_prime, gamma_prime = _running_reference()
     con = handle.connector
-    start = StartResidual(con, con.reference)
+    start = StartResidual(con)
     start.jacobian(t, q, v, 1.0, gamma_prime)
     errors, changes = [], []
     for s in (1.0, 0.5, 0.25, 0.125):
@@ -72,7 +72,7 @@ def test_the_predicted_forces_are_served_once_and_exactly():
     calls = []
     evaluate = con.residual_forces
     con.residual_forces = lambda *args: calls.append(args[0]) or evaluate(*args)
-    start = StartResidual(con, con.reference)
+    start = StartResidual(con)
     assert np.array_equal(start.forces(t, q, v), evaluate(t, q, v)) and len(calls) == 1
     start.expect(t, q, v, np.zeros_like(q), gamma_prime)  # no Jacobian yet: Exudyn's start exactly
     start.forces(t, q, v)

@@ -260,7 +260,7 @@ def _add_connector(mbs, connector, nodes, layout, inner, held, steady):
                                           for n in nodes])
     if connector.surface is not None:  # the start carries the surfaces at t = 0 (MODEL.md §13d)
         _settle_surfaces(mbs, connector, nodes, layout, inner, held)
-    start = StartResidual(connector, connector.reference)
+    start = StartResidual(connector)
 
     def force_user_function(mbs_, t, itemNumber, q, q_t):
         return start.forces(t, q, q_t)

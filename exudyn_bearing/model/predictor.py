@@ -27,6 +27,7 @@ nodes of its balls, cage and races (Lie-group rotation-vector nodes, 6 coordinat
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -109,6 +110,18 @@ def compose_rotation_vectors(theta, omega):
     return out
 
 
+class _Prediction(NamedTuple):
+    """A step's predicted iterate (full coordinate vectors) and what comes with it."""
+
+    q: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+    new_step: bool  #: the step size changed since the last step
+    beta_prime: float  #: β' = (1 − α_m)/(h² β (1 − α_f)), 1/s²
+    gamma_prime: float  #: γ' = γ/(h β), 1/s
+    refresh: bool = False  #: the last step was slow on an old Jacobian
+
+
 class NewtonPredictor:
     """Exudyn ``PreNewtonResidualUserFunction`` that replaces the first Newton iterate of
     each implicit step by the constant-acceleration state of the bearings' nodes (module
@@ -176,12 +189,12 @@ class NewtonPredictor:
             self._iterations, self._jacobians = 0, jacobians
             self._pending = self._predict(mbs, solver, t)
             if self._pending is not None:
-                self._pending = self._pending + (slow,)
+                self._pending = self._pending._replace(refresh=slow)
                 self._tell_start_residuals(t)
         elif newtonIt == 1 and self._pending is not None:
-            q_new, v_new, a_new, new_step, _, _, slow = self._pending
-            self._pending = None
-            if new_step or slow:
+            pending, self._pending = self._pending, None
+            q_new, v_new, a_new = pending.q, pending.v, pending.a
+            if pending.new_step or pending.refresh:
                 # Exudyn keeps the last Jacobian across a change of step size, whose mass
                 # part scales with 1/h²: from the predicted iterate that stale matrix
                 # diverges (contraction 2 after the step doubled), so take a fresh one here;
@@ -206,9 +219,9 @@ class NewtonPredictor:
 
     def _tell_start_residuals(self, t):
         """Tell each connector's start residual its predicted iterate and increment."""
-        q_new, v_new, a_new, _, beta_prime, gamma_prime, _ = self._pending
+        p = self._pending
         for (start, _), rows in zip(self.start_residuals, self._indices[4]):
-            start.expect(t, q_new[rows], v_new[rows], a_new[rows] / beta_prime, gamma_prime)
+            start.expect(t, p.q[rows], p.v[rows], p.a[rows] / p.beta_prime, p.gamma_prime)
 
     def _count_cut(self, solver, t):
         """A step attempt that ends before the last one of the same solve follows a failed
@@ -220,9 +233,10 @@ class NewtonPredictor:
         self._attempt = (solver, end)
 
     def _predict(self, mbs, solver, t):
-        """The full (q, v, a) vectors with the bearings' nodes at their constant-acceleration
-        state (called with Exudyn's zero-acceleration start in place; ``solver`` the system's
-        dynamic solver), and whether the step size changed; None outside a dynamic step."""
+        """The :class:`_Prediction`: the full (q, v, a) vectors with the bearings' nodes at their
+        constant-acceleration state (called with Exudyn's zero-acceleration start in place;
+        ``solver`` the system's dynamic solver), whether the step size changed, β' and γ';
+        None outside a dynamic step."""
         if solver is not self._solver:  # a new solve: its constants and coordinate indices, once
             self._first_solve = self._solver is None
             self._solver, self._constants, self._h = solver, _constants(solver), math.nan
@@ -260,7 +274,7 @@ class NewtonPredictor:
         gamma_prime = gamma / (h * beta)
         if not _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma_prime, a):
             return None
-        return q, v, a, new_step, beta_prime, gamma_prime
+        return _Prediction(q, v, a, new_step, beta_prime, gamma_prime)
 
 
 def _constants(solver):

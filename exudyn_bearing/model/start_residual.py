@@ -31,12 +31,11 @@ class StartResidual:
     """A connector's force function for Exudyn (``forces``) and its Jacobian function
     (``jacobian``) with the start residual of predicted steps linearized (module docstring).
 
-    ``connector``: the :class:`~exudyn_bearing.model.connector.BearingConnector`; ``reference``
-    its nodes' reference coordinates (Exudyn's user functions see q without them)."""
+    ``connector``: the :class:`~exudyn_bearing.model.connector.BearingConnector` (its
+    ``reference`` set: Exudyn's user functions see q without it)."""
 
-    def __init__(self, connector, reference):
+    def __init__(self, connector):
         self.connector = connector
-        self.reference = reference
         #: (t s, predicted q and q̇ without reference, increment δ, γ' 1/s) of the next call
         self._expected = None
         #: (t, q, q̇, forces) of the predicted iterate, served once
@@ -73,7 +72,7 @@ class StartResidual:
     def jacobian(self, t, q, q_t, f_q, f_qt):
         """Exudyn's ``jacobianUserFunction`` (q without reference): the block Jacobian
         -(f_q ∂F/∂q + f_qt ∂F/∂q̇), kept for the start residuals."""
-        jac = self.connector.jacobian(t, np.asarray(q) + self.reference, np.asarray(q_t), f_q, f_qt)
+        jac = self.connector.jacobian(t, np.asarray(q) + self.connector.reference, np.asarray(q_t), f_q, f_qt)
         self._jacobian = (jac / f_q, f_qt / f_q) if f_q != 0.0 else None
         return jac
 

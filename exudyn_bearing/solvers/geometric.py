@@ -237,6 +237,17 @@ def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> 
     return (axial * a * (2.0 * a) ** 1.5 / (bearing.balls * k)) ** 0.25
 
 
+def _given_pose(value, name: str) -> np.ndarray:
+    """The pose (dx, dy, dz, θx, θy) of a given 3 or 5 numbers (m, rad; the tilt 0 if not
+    given); a ValueError naming ``name`` otherwise."""
+    given = np.asarray(value, dtype=float)
+    if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
+        raise ValueError(f"{name} must be 3 or 5 finite numbers, got {value!r}")
+    x = np.zeros(5)
+    x[:len(given)] = given
+    return x
+
+
 def geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz_method, max_iter, displacement,
                     start_pose=None):
     """(inner-race pose (dx, dy, dz, θx, θy) to start the geometric balance from, the balls'
@@ -246,17 +257,11 @@ def geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz
     # start from the fixed-angle answer without centrifugal force
     x = np.zeros(5)
     if start_pose is not None and displacement is None:
-        given = np.asarray(start_pose, dtype=float)
-        if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
-            raise ValueError(f"start_pose must be 3 or 5 finite numbers, got {start_pose!r}")
-        x[:len(given)] = given
+        x = _given_pose(start_pose, "start_pose")
         if hold_axial:
             x[2] = 0.0
     elif displacement is not None:
-        given = np.asarray(displacement, dtype=float)
-        if given.shape not in ((3,), (5,)) or not np.all(np.isfinite(given)):
-            raise ValueError(f"displacement must be 3 or 5 finite numbers, got {displacement!r}")
-        x[:len(given)] = given
+        x = _given_pose(displacement, "displacement")
         offsets, con, _ = model.solve_balls(x)
     elif axial_force > 0 or hold_axial:
         try:

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ..results.records import assumptions_line
 
-__all__ = ["print_simulation"]
+__all__ = ["print_simulation", "print_thermal", "plot_temperatures_beside"]
 
 
 def print_simulation(data: dict, args) -> None:
