@@ -10,8 +10,8 @@ alone takes ~2.5 min); ``--time 0.02 --repeat 3`` gives a quicker, interleaved m
     python benchmarks/speed.py [--time 0.1] [--repeat 1]
 
 ``--matrix`` instead runs the heavily-loaded and high-speed case matrix (issue 14: cases (a)-(f);
-issue 19: (g28/g48/g72) the 35-mm bearing at 28 000-72 000 rpm, (h1/h2) the 40-mm spindle at 55 000 rpm,
-each at the defaults from the package's start state, with the half-step error estimate) and
+issue 19: (g28/g48/g72) the 35-mm bearing at 28 000-72 000 rpm, (h1/h2) the 40-mm spindle at 55 000 rpm;
+issue 52: (g72L) the 35-mm bearing at 72 000 rpm with every loss of the TP-2275 heat comparison; each at the defaults from the package's start state, with the half-step error estimate) and
 prints wall time, steps against the nominal count (more steps = step cuts), Newton
 iterations, Jacobians, the estimate of the kinematic cage slip and the cost relative to
 case (a) in the same run ((f) also per cage revolution):
@@ -98,6 +98,15 @@ def _high_speed():
     return dict(bearing=HIGH_SPEED_35MM_BEARING, lubricant=ESTER_TURBINE_OIL, ball_drag=HIGH_SPEED_DRAG)
 
 
+def _high_speed_every_loss():
+    """The 35-mm bearing with every loss of NASA TP-2275's heat comparison (benchmarks/thermal_tp2275.py):
+    rolling resistance, the thermal film, an outer-land-guided cage (4-mm land), 0.5 % oil-air drag."""
+    from exudyn_bearing import CageModel, ContactLaw
+
+    return dict(_high_speed(), cage=CageModel(guidance="outer", guide_clearance=0.25e-3, land_width=4e-3),
+                contact_law=ContactLaw(rolling_resistance=True, thermal_film=True))
+
+
 def _spindle_40mm():
     """The 40-mm spindle bearing with the same oil and drag (issue 19)."""
     from exudyn_bearing.presets import ESTER_TURBINE_OIL, HIGH_SPEED_DRAG, SPINDLE_40MM_BEARING
@@ -120,6 +129,7 @@ MATRIX = {
     "g28": ("35-mm high-speed, 667 N, 28 000 rpm", _high_speed, 667.0, 0.0, 28000.0),
     "g48": ("35-mm high-speed, 667 N, 48 000 rpm", _high_speed, 667.0, 0.0, 48000.0),
     "g72": ("35-mm high-speed, 667 N, 72 000 rpm", _high_speed, 667.0, 0.0, 72000.0),
+    "g72L": ("35-mm high-speed, 667 N, 72 000 rpm, every loss", _high_speed_every_loss, 667.0, 0.0, 72000.0),
     "h1": ("40-mm spindle, 1 kN, 55 000 rpm", _spindle_40mm, 1000.0, 0.0, 55000.0),
     "h2": ("40-mm spindle, 1 kN + 500 N radial, 55 000 rpm", _spindle_40mm, 1000.0, 500.0, 55000.0),
     "h3": ("40-mm spindle, 1 kN, 4 000 rpm (thin film)", _spindle_40mm, 1000.0, 0.0, 4000.0),
