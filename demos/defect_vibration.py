@@ -21,8 +21,8 @@ import numpy as np
 
 from contact.surface import Defect, SurfaceModel
 from exudyn_bearing import CWRU_6205_BEARING, races
-from exudyn_bearing.studies.vibration import (actual_fault_frequencies, envelope_spectrum, sampled_signal,
-                                              spectral_peaks, vibration)
+from exudyn_bearing.studies.signals import envelope_spectrum, sampled_signal, spectral_peaks
+from exudyn_bearing.studies.vibration import actual_fault_frequencies, vibration
 from exudyn_bearing.studies.vibration_plot import plot_vibration
 
 FAULTS = {"outer-race notch": SurfaceModel((Defect("outer", 0.0, 0.18e-3, 0.28e-3),)),

@@ -40,6 +40,7 @@ from contact.defect_passage import length_from_spacing
 from contact.geometry import contact_path_radius
 
 from .passages import ball_approach
+from .signals import bandpass, check_band
 
 __all__ = ["DoubleImpulse", "double_impulse", "spall_size", "HIGH_BAND_HZ", "MIN_SAMPLE_RATE_HZ", "ENTRY_SHARE",
            "BASELINE_FACTOR", "RMS_WINDOW_S"]
@@ -81,12 +82,6 @@ def _trailing_rms(x, sample_rate, window, quiet):
     k = max(1, int(round(window * sample_rate)))
     rms = np.sqrt(np.convolve(x ** 2, np.ones(k) / k)[:x.size])
     return rms, max(ENTRY_SHARE * rms.max(), BASELINE_FACTOR * float(np.median(rms[quiet])))
-
-
-def _band(x, sample_rate, band):
-    from scipy.signal import butter, sosfiltfilt
-
-    return sosfiltfilt(butter(4, band, btype="bandpass", fs=sample_rate, output="sos"), x)
 
 
 def _segments(x, sample_rate, starts, lags):
@@ -147,11 +142,9 @@ def double_impulse(signal, sample_rate: float, fault_hz: float, high_band: tuple
     if x.size / sample_rate < 4.5 * period:
         raise ValueError(f"double_impulse: need at least 4 passages at {fault_hz:g} Hz, the signal holds "
                          f"{x.size / sample_rate * fault_hz:.1f}")
-    band = tuple(high_band or HIGH_BAND_HZ)
-    if not 0 < band[0] < band[1] < 0.5 * sample_rate:
-        raise ValueError(f"high_band {band} Hz must lie inside (0, {0.5 * sample_rate:g}) Hz, low < high")
+    band = check_band(high_band or HIGH_BAND_HZ, sample_rate, "high_band")
     x = x - np.mean(x)
-    high = _band(x, sample_rate, band)
+    high = bandpass(x, sample_rate, band)
     strikes = _fold_strikes(high, np.abs(hilbert(high)) ** 2, sample_rate, period)
     before, after = int(round(0.5 * period * sample_rate)), int(round(0.1 * period * sample_rate))
     lags = np.arange(-before, after) / sample_rate
