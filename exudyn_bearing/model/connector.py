@@ -79,6 +79,8 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         #: the contacts' records, both force paths (:func:`exudyn_bearing.contact_records.contact_records`)
         self.records = contact_records(bearing, lubricant, law, surface=surface_record(self.surface, bearing,
                                                                                       ball_circles))
+        #: (D, d_m) m the surfaces were laid on (both paths keep them when the sizes change, set_geometry)
+        self._surface_sizes = (bearing.ball_diameter, bearing.pitch_diameter)
         self.terms = self.records.terms
         self.races, self.layout = races, layout
         self.origin = np.asarray(frame_origin, dtype=float)
@@ -137,6 +139,33 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                                  for oil in (inner, outer))
         self.records = self.records._replace(laws=(law_record(self.law, inner), law_record(self.law, outer)))
         self.guide = land_guide(self.bearing, land, self.cage)
+        if self._compiled is not None:
+            self._compiled.set_physics()
+
+    def set_geometry(self, bearing):
+        """From now on the contacts take ``bearing``'s sizes (this bearing grown or shrunk with
+        its temperatures, :meth:`~exudyn_bearing.Bearing.expanded`, MODEL.md §14f): groove
+        radii, groove centres' radii, ball diameter, pitch diameter; both force paths, the land
+        and the outputs follow. The groove centres keep their axial places in their races' frames
+        (the rings hold their axial positions, §14f: a race held axially then presses the balls
+        by the change of the touching distance). Ball count, masses, materials, the cage's pocket
+        circle and the surfaces' layout stay as built."""
+        if bearing.balls != self.bearing.balls:
+            raise ValueError(f"set_geometry: the bearing has {bearing.balls} balls, the model {self.bearing.balls}")
+        fresh = contact_records(bearing, self.lubricant, self.law)
+        z = self.records.grooves[1]
+        grooves = (fresh.grooves[0], z, fresh.grooves[2])
+        geometry = fresh.geometry._replace(groove=np.column_stack([fresh.geometry.groove[:, 0],
+                                                                   self.records.geometry.groove[:, 1],
+                                                                   fresh.geometry.groove[:, 2]]))
+        self.records = self.records._replace(tube=fresh.tube, grooves=grooves, races=fresh.races, geometry=geometry)
+        self.groove_all, self.params = self.records.grooves, self.records.races
+        self._params_cache = {}
+        self.bearing = bearing
+        self.guide = land_guide(bearing, self.oils[2], self.cage)
+        # the drag follows the balls' size; the cage's pockets keep their pitch radius (no cage growth)
+        self.cage_record = cage_record(self.setup.replace(bearing=bearing), self.axis, self.origin)._replace(
+            pitch_radius=self.cage_record.pitch_radius)
         if self._compiled is not None:
             self._compiled.set_physics()
 
@@ -400,7 +429,7 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                             ball_omega=both_races(w), race_axis=stacked(frames, 1, (3, 3), bsz, z)[:, :, 2],
                             race_omega=stacked(frames, 3, (3,), bsz, z))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
-                                   self.bearing.ball_diameter, self.bearing.pitch_diameter, **pits)
+                                   *self._surface_sizes, **pits)
         if self.oils[0] is self.oils[1]:
             frc_all = ball_race_forces(kin_all, params, self.oils[0], self.law, self._race_terms[0],
                                        compiled=compiled)
@@ -420,12 +449,12 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         if self.cage.kind == "rigid":
             s = self.layout["cage"]
             cage_force = cage_physics.pocket_forces(c, v, pos[:, s], rot[:, s], vel[:, s], omega[:, s],
-                                                    self.pocket_angles, self.bearing.pitch_radius, self.cage.clearance,
+                                                    self.pocket_angles, self.cage_record.pitch_radius, self.cage.clearance,
                                                     self.cage.stiffness, self.cage_damping)
             react_f[:, :, s] -= cage_force
             react_t[:, :, s] -= cross(c - pos[:, s, None], cage_force)
         elif self.cage.kind == "spring-chain":
-            cage_force = cage_physics.spring_chain_forces(c, self.axis, self.bearing.pitch_radius, self.cage.stiffness,
+            cage_force = cage_physics.spring_chain_forces(c, self.axis, self.cage_record.pitch_radius, self.cage.stiffness,
                                                           self.origin)
         drag_force = np.zeros((bsz, z, 3))
         if self.drag is not None and self.drag.drag_coefficient * self.drag.oil_volume_fraction > 0:

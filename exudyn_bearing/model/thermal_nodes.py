@@ -9,8 +9,11 @@ the step's start state: its losses by place (:func:`place_losses`) become the no
 Q (:func:`contact.bearing_thermal.place_heat`), its speeds and contacts the conductances A
 (:func:`contact.bearing_thermal.bearing_network`), and the node temperatures each race's
 and the land's oil (:func:`exudyn_bearing.solvers.thermal.contact_oils`,
-:meth:`BearingConnector.set_oils`). Heat and oils are held over the period: the coupling
-is explicit over a period, the network's own conduction implicit in Exudyn's step.
+:meth:`BearingConnector.set_oils`), and the rings' and balls' temperatures the contacts'
+sizes (:func:`exudyn_bearing.solvers.thermal.heated`, :meth:`BearingConnector.set_geometry`,
+MODEL.md §14f: the groove centres keep their axial places). Heat, oils and sizes are held over
+the period: the coupling is explicit over a period, the network's own conduction implicit in
+Exudyn's step.
 """
 from __future__ import annotations
 
@@ -161,14 +164,26 @@ class BearingTemperatures:
         heat = place_heat(losses)
         set_network(mbs, self.object, network, heat, (self.node, [temps[k] for k in NODES]) if in_step else None)
         con.set_oils(*contact_oils(self.lubricant, temps, self.setup.cage.guidance))
+        if in_step:  # (the construction's update: the builder grew the bearing to these temperatures)
+            self._grow(t, temps)
         self.updates.append({"time_s": float(t), "losses_W": losses, "heat_W": heat, "temperatures_K": temps,
                              "removed_W": network.to_boundaries(temps), "network": network,
-                             "oils": con.oils})
+                             "oils": con.oils, "bearing": con.bearing})
+
+    def _grow(self, t, temps) -> None:
+        """The contacts' sizes at the node temperatures ``temps`` (MODEL.md §14f); a ValueError
+        naming the time where they close the clearance (the model cannot hold that geometry)."""
+        try:
+            bearing = heated(self.start.cold, temps).bearing
+        except ValueError as err:
+            raise ValueError(f"thermal network at t = {t:.6g} s: {err}") from None
+        if bearing != self.connector.bearing:
+            self.connector.set_geometry(bearing)
 
     def clearance_change(self, temperatures: dict) -> float:
-        """The diametral clearance's change, m, from the run's (the start temperatures')
-        to the bearing grown to ``temperatures`` {node: K} (MODEL.md §14f; the run holds the
-        start's geometry); a ValueError where they close the clearance."""
+        """The diametral clearance's change, m, from the run's start (the start temperatures')
+        to the bearing grown to ``temperatures`` {node: K} (MODEL.md §14f; the run's contacts
+        follow at each update); a ValueError where they close the clearance."""
         grown = heated(self.start.cold, temperatures).bearing
         return grown.diametral_clearance - self.setup.bearing.diametral_clearance
 

@@ -206,8 +206,9 @@ def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
 
 def _chunks(handle, time, chunk):
     """Slices of at most ``chunk`` recorded states; with temperatures in the solve (MODEL.md
-    §14g), each within one update of the contacts' oils, which are set for it here (every
-    state is evaluated with the oils it ran with; the last update's are left set)."""
+    §14g), each within one update of the contacts' oils and sizes, which are set for it here
+    (every state is evaluated with the oils and sizes it ran with; the last update's are left
+    set)."""
     temperatures = getattr(handle, "temperatures", None)
     if temperatures is None or not temperatures.updates:
         yield from (slice(k, k + chunk) for k in range(0, len(time), chunk))
@@ -215,9 +216,16 @@ def _chunks(handle, time, chunk):
     update = temperatures.oils_at(time)
     edges = np.flatnonzero(np.diff(update)) + 1
     for lo, hi in zip(np.concatenate([[0], edges]), np.concatenate([edges, [len(time)]])):
-        handle.connector.set_oils(*temperatures.updates[update[lo]]["oils"])
+        _set_update(handle.connector, temperatures.updates[update[lo]])
         yield from (slice(k, min(k + chunk, hi)) for k in range(lo, hi, chunk))
-    handle.connector.set_oils(*temperatures.updates[-1]["oils"])
+    _set_update(handle.connector, temperatures.updates[-1])
+
+
+def _set_update(con, update) -> None:
+    """The oils and sizes of one thermal ``update`` set on the connector ``con``."""
+    con.set_oils(*update["oils"])
+    if update["bearing"] != con.bearing:
+        con.set_geometry(update["bearing"])
 
 
 def _outputs(con, time, q, q_t) -> dict:

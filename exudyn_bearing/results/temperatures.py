@@ -15,8 +15,9 @@ def thermal_summary(temperatures, mbs, fraction: float = 1 / 3) -> dict:
     temperatures; the heat by place and by node and the heat carried off by the oil and to
     the ambient and the heat the nodes stored (sum C dT / dt), time means over the last
     ``fraction`` of the run (their balance checks the integration); the contacts' oils at the end; the
-    clearance the end temperatures would give (the run holds the start's geometry); and
-    the temperatures at every update (``history``)."""
+    clearance's change from the start to the end temperatures (the run's contacts follow the
+    temperatures at each update, MODEL.md §14f); and the temperatures at every update
+    (``history``)."""
     th = temperatures
     time, temps = th.history(mbs)
     ups = th.updates
