@@ -31,6 +31,7 @@ from ..setup import FROM_SETUP, BearingSetup
 from ..presets import REFERENCE_BEARING
 from ..races import Race, move_body
 from ..solvers.surface_start import surface_start
+from ..solvers.thermal import axial_pressing
 from .bodies import add_balls, add_cage, add_races
 from .checks import check_displacement, check_force, check_frame, check_races, check_start_load
 from .connector import BearingConnector, CageModel
@@ -148,7 +149,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
     innerRaceDisplacement : (dx, dy, dz), optional
         Start a created (``Driven``/``Free``) inner race displaced by this much from the
         outer race, m, in the bearing frame, with the balls in quasi-static balance for
-        that position (no applied forces then), e.g. a preload by interference.
+        that position (no applied forces then), e.g. a preload by interference. With a
+        ``thermal`` model it is set at the assembly temperature: the start adds the axial
+        pressing δ_a of the growth to the start temperatures (MODEL.md §14f, §14g).
     initialControl : {'auto', 'inner', 'outer'}
         Pure-rolling start: 'inner'/'outer' is raceway control (Jones) by that contact —
         each ball's absolute spin axis solved for zero spin there and zero rolling slip at
@@ -221,6 +224,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
                                    and start_load is None, rpm_i=speeds[0] * 30 / np.pi, rpm_o=speeds[1] * 30 / np.pi,
                                    inner_kind=inner.kind, initial_state=initialState)
         setup, start_setup, bearing = heat_start.setup, heat_start.start_setup, heat_start.setup.bearing
+        if shift is not None:  # the rings at their axial places since assembly: pressed by δ_a (MODEL.md §14f)
+            relative[2] += axial_pressing(heat_start.cold, heat_start.temperatures)
     start = start_state(start_setup, inner, relative, speeds, axial=axial, radial=radial, loaded=loaded,
                         start_load=start_load, displaced=shift is not None, initial_control=initialControl,
                         initial_state=initialState, steady=None if heat_start is None else heat_start.steady)

@@ -13,10 +13,12 @@ import time as _time
 import numpy as np
 
 from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, place_heat
+from contact.thermal_expansion import heated_geometry
 from .steady_balance import solve_steady, steady_result
 from .steady_power import steady_losses
 
-__all__ = ["thermal_steady_state", "thermal_geometry", "contact_oils", "heated", "TEMPERATURE_TOLERANCE_K",
+__all__ = ["thermal_steady_state", "thermal_geometry", "contact_oils", "heated", "axial_pressing",
+           "TEMPERATURE_TOLERANCE_K",
            "MAX_ITERATIONS"]
 
 #: the fixed point is reached when no node's temperature changes by more than this, K
@@ -61,9 +63,22 @@ def heated(setup, temperatures: dict):
     """``setup`` with its bearing grown to the node ``temperatures`` (K) from the thermal
     model's assembly temperature (MODEL.md §14f); a ValueError where that closes the clearance."""
     m = setup.thermal
-    rise = {k: temperatures[k] - m.assembly_temperature for k in ("inner_ring", "outer_ring", "balls")}
-    return setup.replace(bearing=setup.bearing.expanded(rise["inner_ring"], rise["outer_ring"], rise["balls"],
-                                                        m.ring_expansion, m.ball_expansion))
+    return setup.replace(bearing=setup.bearing.expanded(*_rises(m, temperatures), m.ring_expansion, m.ball_expansion))
+
+
+def axial_pressing(setup, temperatures: dict) -> float:
+    """δ_a = A sin α0 − A' sin α0', m: how much further rings held at their axial places since
+    assembly press the balls once ``setup``'s bearing is grown to the node ``temperatures`` (K)
+    (MODEL.md §14f, eq. 14.9); a ValueError where the growth closes the clearance."""
+    m, b = setup.thermal, setup.bearing
+    return heated_geometry(b.ball_diameter, b.pitch_diameter, b.contact_angle, b.inner_conformity,
+                           b.outer_conformity, *_rises(m, temperatures), m.ring_expansion,
+                           m.ball_expansion).axial_interference
+
+
+def _rises(model, temperatures: dict) -> tuple:
+    """(inner ring, outer ring, balls) temperature rises above the assembly temperature, K."""
+    return tuple(temperatures[k] - model.assembly_temperature for k in ("inner_ring", "outer_ring", "balls"))
 
 
 def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
