@@ -192,9 +192,8 @@ def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
     out = {name: (np.concatenate([p[name] for p in parts]) if not isinstance(parts[0][name], dict) else
                   {f: np.concatenate([p[name][f] for p in parts]) for f in parts[0][name]})
            for name in parts[0]}
-    bearing = handle.connector.bearing
     mu_max, warning = _traction_coefficient(time, {"inner": out["inner"], "outer": out["outer"]})
-    nominal = np.array([bearing.cage_speed(wi, wo) for wi, wo in zip(out["inner_speed"], out["outer_speed"])])
+    nominal = out["nominal"]
     cage = out["cage_speed"]
     kin_slip = np.mean(cage_slip(out["kin"], cage[:, None]), axis=1)
     return BearingResults(time, out["inner_speed"], out["outer_speed"], cage, nominal, cage_slip(nominal, cage),
@@ -263,6 +262,8 @@ def _outputs(con, time, q, q_t) -> dict:
            "land_force": np.zeros(b) if s.cage_land_force is None else np.linalg.norm(s.cage_land_force, axis=-1),
            "land_drive": s.land_drive_power}
     out["drag_loss"], out["cage_loss"], out["land_loss"] = body_losses(s)
+    # the nominal cage speed with the sizes these states ran with (a run's temperatures grow them)
+    out["nominal"] = np.array([con.bearing.cage_speed(wi, wo) for wi, wo in zip(w_i, w_o)])
     for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
         # a race receives -F at each contact point and -M_z n: about the bearing centre o that
         # is -[(c - o) x F + (moment on the ball about its centre)]
