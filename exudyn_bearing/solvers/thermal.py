@@ -18,8 +18,7 @@ from .steady_balance import solve_steady, steady_result
 from .steady_power import steady_losses
 
 __all__ = ["thermal_steady_state", "thermal_geometry", "contact_oils", "heated", "axial_pressing",
-           "TEMPERATURE_TOLERANCE_K",
-           "MAX_ITERATIONS"]
+           "TEMPERATURE_TOLERANCE_K", "MAX_ITERATIONS"]
 
 #: the fixed point is reached when no node's temperature changes by more than this, K
 TEMPERATURE_TOLERANCE_K = 0.01
