@@ -7,7 +7,7 @@ package they were raised (:func:`one_line`, installed on import).
 import warnings
 
 __all__ = ["BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "SurfaceStartWarning",
-           "TractionCoefficientWarning"]
+           "ThermalGrowthWarning", "TractionCoefficientWarning"]
 
 
 class BearingSimulationError(RuntimeError):
@@ -35,8 +35,14 @@ class SurfaceStartWarning(UserWarning):
     is left and where (``handle.connector.surface_start``)."""
 
 
+class ThermalGrowthWarning(UserWarning):
+    """A run's temperatures would grow the bearing past zero clearance (the balls pinched
+    radially), which its free-contact-angle geometry cannot hold (MODEL.md §14f): the contacts
+    keep the sizes of the last update that could be grown. Said once per run."""
+
+
 #: the package's warnings, printed in one line
-ONE_LINE = (NumpyPathWarning, SurfaceStartWarning, TractionCoefficientWarning)
+ONE_LINE = (NumpyPathWarning, SurfaceStartWarning, ThermalGrowthWarning, TractionCoefficientWarning)
 _FORMAT = warnings.formatwarning
 
 

@@ -131,3 +131,35 @@ def test_both_force_paths_take_the_new_sizes(name):
     for got in (single, fast):
         for part in (slice(0, 3), slice(3, 6)):  # forces (N) and torques (N m) on their own scales
             assert np.max(np.abs(got[:, part] - ref[:, part])) < 1e-6 * np.max(np.abs(ref[:, part]))
+
+
+def test_a_zero_clearance_bearing_grown_uniformly_keeps_its_load_distribution():
+    """All of a zero-clearance 6205 10 K warmer is the same bearing scaled by 1 + α ΔT: its free
+    angle is a rounding's (~1e-7 rad), and its quasi-static loads stay those of the cold one
+    (the geometric start no longer takes the fixed-angle answer, kilometres beyond the grooves)."""
+    from exudyn_bearing.presets import CWRU_6205_BEARING
+    from exudyn_bearing.solvers.thermal import heated
+
+    cold = BearingSetup(CWRU_6205_BEARING, thermal=ThermalModel(bore=25e-3))
+    warm = heated(cold, {k: 303.15 for k in NODES}).bearing
+    assert CWRU_6205_BEARING.diametral_clearance == 0.0 and warm.contact_angle < 1e-6
+    loads = [solve_load_distribution(b, axial_force=200.0, radial_force=1000.0, rpm=1797.0).inner_load
+             for b in (CWRU_6205_BEARING, warm)]
+    np.testing.assert_allclose(loads[1], loads[0], rtol=1e-4, atol=1e-6 * np.max(loads[0]))
+
+
+def test_growth_past_zero_clearance_is_said_once_and_the_sizes_kept():
+    """A zero-clearance 6205 whose inner ring is made 20 K hotter would pinch its balls, which
+    the free-contact-angle geometry cannot hold: the run goes on with the last sizes and says
+    so once."""
+    from exudyn_bearing.errors import ThermalGrowthWarning
+    from exudyn_bearing.presets import CWRU_6205_BEARING
+
+    setup = BearingSetup(CWRU_6205_BEARING, thermal=ThermalModel(bore=25e-3))
+    with pytest.warns(ThermalGrowthWarning, match="closes the bearing's clearance") as said:
+        r, th, bumped = _run(0.007, setup=setup, innerRace=races.Driven(1797.0), axialForce=200.0,
+                             radialForce=1000.0)
+    assert bumped and len([w for w in said if issubclass(w.category, ThermalGrowthWarning)]) == 1
+    assert th.updates[-1]["temperatures_K"]["inner_ring"] > th.updates[-1]["temperatures_K"]["outer_ring"] + 19
+    assert th.updates[-1]["bearing"] == th.updates[0]["bearing"]
+    assert np.all(np.isfinite(r.inner["load"]))

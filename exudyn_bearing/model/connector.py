@@ -149,7 +149,9 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         and the outputs follow. The groove centres keep their axial places in their races' frames
         (the rings hold their axial positions, §14f: a race held axially then presses the balls
         by the change of the touching distance). Ball count, masses, materials, the cage's pocket
-        circle and the surfaces' layout stay as built."""
+        circle and the surfaces' layout stay as built. The same sizes again: nothing to do."""
+        if bearing == self.bearing:
+            return
         if bearing.balls != self.bearing.balls:
             raise ValueError(f"set_geometry: the bearing has {bearing.balls} balls, the model {self.bearing.balls}")
         fresh = contact_records(bearing, self.lubricant, self.law)

@@ -17,11 +17,13 @@ Exudyn's step.
 """
 from __future__ import annotations
 
+import warnings
 from typing import NamedTuple
 
 import numpy as np
 
 from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, place_heat
+from ..errors import ThermalGrowthWarning
 from ..races import node_rows
 from ..solvers.thermal import contact_oils, heated
 
@@ -108,6 +110,7 @@ class BearingTemperatures:
         self.update_period = float(update_period)
         self.start_temperatures = {k: float(start.temperatures[k]) for k in NODES}
         self.updates, self._next, self._last, self._rows = [], 0.0, 0.0, []
+        self._growth_refused = False  # the growth closed the clearance once (said once)
         # zero rates until the first update (t = 0) sets the network of the start state
         self.node, self.object, self.sensor = add_network(mbs, [self.start_temperatures[k] for k in NODES])
         # the start state's heat before Exudyn's solver computes the start rates (its first
@@ -171,14 +174,19 @@ class BearingTemperatures:
                              "oils": con.oils, "bearing": con.bearing})
 
     def _grow(self, t, temps) -> None:
-        """The contacts' sizes at the node temperatures ``temps`` (MODEL.md §14f); a ValueError
-        naming the time where they close the clearance (the model cannot hold that geometry)."""
+        """The contacts' sizes at the node temperatures ``temps`` (MODEL.md §14f). Where they
+        would close the clearance (the balls pinched radially, which the free-contact-angle
+        geometry cannot hold) the contacts keep the last update's sizes, said once
+        (:class:`~exudyn_bearing.errors.ThermalGrowthWarning`; the summary's ``clearance_warning``)."""
         try:
             bearing = heated(self.start.cold, temps).bearing
         except ValueError as err:
-            raise ValueError(f"thermal network at t = {t:.6g} s: {err}") from None
-        if bearing != self.connector.bearing:
-            self.connector.set_geometry(bearing)
+            if not self._growth_refused:
+                self._growth_refused = True
+                warnings.warn(f"thermal network at t = {t:.6g} s: {err}; the contacts keep the sizes of the last "
+                              "update", ThermalGrowthWarning, stacklevel=2)
+            return
+        self.connector.set_geometry(bearing)
 
     def clearance_change(self, temperatures: dict) -> float:
         """The diametral clearance's change, m, from the run's start (the start temperatures')

@@ -223,8 +223,7 @@ def _chunks(handle, time, chunk):
 def _set_update(con, update) -> None:
     """The oils and sizes of one thermal ``update`` set on the connector ``con``."""
     con.set_oils(*update["oils"])
-    if update["bearing"] != con.bearing:
-        con.set_geometry(update["bearing"])
+    con.set_geometry(update["bearing"])
 
 
 def _outputs(con, time, q, q_t) -> dict:

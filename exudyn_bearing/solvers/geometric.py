@@ -214,7 +214,7 @@ def _centred_radial_start(bearing: Bearing, radial: float, hertz_method: str) ->
     deep-groove bearing does) and the race moved radially by the clearance plus the
     deflections of Stribeck's most heavily loaded ball, Q = 5 F_r / Z."""
     (r_i, z_i), (r_o, z_o) = bearing.groove_centres()
-    t = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    t = bearing.groove_centre_distance
     clearance = t - (r_i - r_o)  # radial play at aligned grooves, m
     q = 5.0 * radial / bearing.balls
     deflection = sum((q / bearing.hertz(0.0, race, hertz_method).stiffness) ** (2.0 / 3.0)
@@ -231,7 +231,7 @@ def _axial_shift_estimate(bearing: Bearing, axial: float, hertz_method: str) -> 
     s = (F_a A (2A)^1.5 / (Z K))^(1/4), K the series Hertz stiffness at a = 0."""
     if axial <= 0:
         return 0.0
-    a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
+    a = bearing.groove_centre_distance
     k_i, k_o = (bearing.hertz(0.0, race, hertz_method).stiffness for race in ("inner", "outer"))
     k = (k_i ** (-2.0 / 3.0) + k_o ** (-2.0 / 3.0)) ** -1.5
     return (axial * a * (2.0 * a) ** 1.5 / (bearing.balls * k)) ** 0.25
@@ -266,11 +266,17 @@ def geometric_start(model, bearing, axial_force, radial_force, hold_axial, hertz
     elif axial_force > 0 or hold_axial:
         try:
             x[:3] = fixed_angle_balance(bearing, axial_force, radial_force, 0.0, hold_axial, hertz_method, 1e-6, max_iter)[0]
+            # a free angle of a rounding (1e-7 rad: a zero-clearance bearing grown uniformly)
+            # puts the fixed-angle answer beyond the grooves: no start either
+            beyond = bearing.contact_angle <= DEEP_GROOVE_MAX_ANGLE and \
+                np.linalg.norm(x[:3]) >= bearing.groove_centre_distance
         except (QuasiStaticError, ZeroDivisionError):
             # fixed angles cannot carry this radial load (or there is no free angle: zero
             # clearance), full grooves may: start centred and let the geometric balance move
             if bearing.contact_angle > DEEP_GROOVE_MAX_ANGLE:
                 raise
+            beyond = True
+        if beyond:
             x[:3] = _centred_radial_start(bearing, radial_force, hertz_method)
             x[2] = 0.0 if hold_axial else x[2] + _axial_shift_estimate(bearing, axial_force, hertz_method)
     elif radial_force > 0:
