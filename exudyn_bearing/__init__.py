@@ -21,7 +21,7 @@ from .setup import BearingSetup
 from .cage import CageModel
 from .criteria import gyroscopic_minimum_axial, hirano_minimum_axial
 from .errors import (BearingSimulationError, NumpyPathWarning, QuasiStaticError, SurfaceStartWarning,
-                     TractionCoefficientWarning)
+                     ThermalGrowthWarning, TractionCoefficientWarning)
 from .model.assembly import SettleShaft
 from .model.builder import BearingHandle, CreateAngularContactBearing
 from .presets import (CWRU_6205_BEARING, ESTER_TURBINE_OIL, HIGH_SPEED_35MM_BEARING, HIGH_SPEED_DRAG, M50_STEEL, REFERENCE_BEARING,
@@ -56,6 +56,6 @@ __all__ = [
     "gyroscopic_minimum_axial", "hirano_minimum_axial",
     # errors and warnings
     "BearingSimulationError", "NumpyPathWarning", "QuasiStaticError", "SurfaceStartWarning",
-    "TractionCoefficientWarning",
+    "ThermalGrowthWarning", "TractionCoefficientWarning",
     "__version__",
 ]
