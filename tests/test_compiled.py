@@ -264,6 +264,27 @@ def test_serial_kernel_from_a_thread_equals_parallel():
     np.testing.assert_allclose(box["f"], main, rtol=0, atol=1e-9 * np.max(np.abs(main)))
 
 
+def test_many_contacts_on_threads_are_the_serial_kernel(monkeypatch):
+    """A recorded run's outputs (>= PARALLEL_CONTACTS contacts) spread the traction over
+    numba's threads from the main thread and run serially from another thread: bit for bit
+    the serial loop's numbers, with the limiting shear and the film's elasticity on."""
+    from contact.kernels import crook
+
+    ux, uy, om, a, b, pm, h = _contacts(2 * crook.PARALLEL_CONTACTS, seed=3)
+    ent = np.linspace(-8.0, 8.0, ux.size)
+    args = (ux, uy, om, a, b, pm, h, LUB)
+    kw = dict(limiting_shear=0.047, film_modulus=0.2953, entrainment=ent)
+    threaded = compiled.crook_fast(*args, **kw)
+    box = {}
+    worker = threading.Thread(target=lambda: box.setdefault("f", compiled.crook_fast(*args, **kw)))
+    worker.start()
+    worker.join()
+    monkeypatch.setattr(crook, "PARALLEL_CONTACTS", 10 ** 9)
+    serial = compiled.crook_fast(*args, **kw)
+    assert np.array_equal(threaded, serial) and np.array_equal(box["f"], serial)
+    assert np.all(np.isfinite(serial)) and np.count_nonzero(serial[0]) > ux.size // 2
+
+
 @pytest.mark.parametrize("law", [ContactLaw(traction="coulomb"), ContactLaw(fast_quadrature=False),
                                  ContactLaw(compiled=False)])
 def test_laws_the_kernel_does_not_cover_use_numpy(law):
