@@ -10,13 +10,15 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
+import numpy as np
+
 from .heat_transfer import (cylinder_conduction, enthalpy_flow, film_conduction, mixture_properties, plate_convection,
                             rod_conduction, spot_conductance)
 from .lubricant import _check_positive
 from .thermal_network import ThermalNetwork
 
 __all__ = ["ThermalModel", "ThermalGeometry", "OperatingPoint", "NODES", "HEAT_SPLIT", "bearing_network",
-           "place_heat", "inlet_temperature"]
+           "mean_contact", "place_heat", "inlet_temperature"]
 
 NODES = ("shaft", "inner_ring", "balls", "cage", "outer_ring", "housing", "oil")
 
@@ -161,6 +163,16 @@ class OperatingPoint(NamedTuple):
     ball_spin: float
     inner_contact: tuple
     outer_contact: tuple
+
+
+def mean_contact(a, b, film, speed, load) -> tuple:
+    """One race's contact for :class:`OperatingPoint`: the mean semi-axes a, b (m), central
+    film (m) and rolling speed (m/s) of its loaded contacts (``load`` > 0, N); zeros where
+    none is loaded."""
+    loaded = np.asarray(load) > 0.0
+    if not np.any(loaded):
+        return 0.0, 0.0, 0.0, 0.0
+    return tuple(float(np.mean(np.asarray(v)[loaded])) for v in (a, b, film, speed))
 
 
 def bearing_network(model: ThermalModel, geometry: ThermalGeometry, point: OperatingPoint, lubricant,

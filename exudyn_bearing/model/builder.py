@@ -177,8 +177,9 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
         With a setup's ``thermal`` model (MODEL.md §14g; else unused): the thermal network's
         node temperatures are first-order states of the solve, its heat the current state's
         losses, each contact's oil at its race's and the balls' temperatures. 'steady': the
-        run starts from the thermal steady state (:func:`exudyn_bearing.steady_state`, pure
-        constant axial load) — temperatures, grown bearing and rolling state; 'inlet': every
+        run starts from the thermal steady state (constant loads: :func:`exudyn_bearing.steady_state`
+        under axial load, :func:`~exudyn_bearing.solvers.quasidynamic.combined_load_state` under
+        combined or radial load) — temperatures, grown bearing and rolling state; 'inlet': every
         node at the oil inlet's temperature, the bearing grown to it; 'auto': 'steady' where
         it applies and converges, else 'inlet'.
     thermalUpdatePeriod : float

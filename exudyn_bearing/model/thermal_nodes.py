@@ -22,7 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, place_heat
+from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, mean_contact, place_heat
 from ..errors import ThermalGrowthWarning
 from ..races import node_rows
 from ..solvers.thermal import contact_oils, heated
@@ -76,13 +76,8 @@ def operating_point_of(con, s) -> OperatingPoint:
     film = np.concatenate([s.inner_forces.film_thickness[0], s.outer_forces.film_thickness[0]])
     speed = np.abs(np.concatenate([s.inner.entrainment[0], s.outer.entrainment[0]]))
     z = len(loads) // 2
-    contacts = []
-    for part in (slice(0, z), slice(z, 2 * z)):
-        loaded = loads[part] > 0.0
-        if not np.any(loaded):
-            contacts.append((0.0, 0.0, 0.0, 0.0))
-            continue
-        contacts.append(tuple(float(np.mean(v[part][loaded])) for v in (a, b, film, speed)))
+    contacts = [mean_contact(a[part], b[part], film[part], speed[part], loads[part])
+                for part in (slice(0, z), slice(z, 2 * z))]
     return OperatingPoint(w_i, w_o, w_c, spin, *contacts)
 
 
@@ -294,25 +289,34 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
                   initial_state) -> ThermalStart:
     """The start temperatures of a bearing with a ``thermal`` model (MODEL.md §14g):
     'inlet' puts every node at the oil inlet's temperature (one oil everywhere);
-    'steady' the thermal steady state of :func:`~exudyn_bearing.steady_state` (pure
-    constant axial load, a ``Driven``/``Free`` inner race turning forwards), whose
-    mechanical state the run then starts from; 'auto' (default) 'steady' where it
+    'steady' the thermal steady state (constant loads, a ``Driven``/``Free`` inner race
+    turning forwards): under a pure axial load :func:`~exudyn_bearing.steady_state`'s,
+    under combined or radial load :func:`~exudyn_bearing.solvers.quasidynamic.combined_load_state`'s
+    (continued as the builder's start, :func:`~exudyn_bearing.solvers.start.steady_start`),
+    whose mechanical state the run then starts from; 'auto' (default) 'steady' where it
     applies and converges, else 'inlet'."""
+    from ..solvers.quasidynamic import combined_load_state
+    from ..solvers.start import continuation_budget, continuation_step
     from ..solvers.steady import steady_state
     from ..solvers.thermal import thermal_geometry
 
     if initial_temperatures not in ("auto", "steady", "inlet"):
         raise ValueError(f"initialTemperatures must be 'auto', 'steady' or 'inlet', got {initial_temperatures!r}")
     why = None
-    if not (constant_load and radial == 0 and axial > 0):
-        why = "it needs a constant pure axial load"
+    if not (constant_load and (radial != 0 or axial > 0)):
+        why = "it needs constant loads"
     elif inner_kind not in ("driven", "free") or not rpm_i > 0:
         why = "it needs a Driven or Free inner race turning forwards"
     elif initial_state == "rolling":
         why = "initialState='rolling' asks for the pure-rolling start"
     steady = None
     if why is None and initial_temperatures != "inlet":
-        steady = steady_state(setup, axial_force=axial, rpm=rpm_i, outer_rpm=rpm_o)
+        if radial == 0:
+            steady = steady_state(setup, axial_force=axial, rpm=rpm_i, outer_rpm=rpm_o)
+        else:
+            steady = combined_load_state(setup, axial_force=axial, radial_force=radial, rpm=rpm_i,
+                                         outer_rpm=rpm_o, max_steps=continuation_budget(initial_state),
+                                         max_step=lambda seed: continuation_step(seed, axial, radial))
         if not steady.converged:
             why, steady = steady.message, None
     if initial_temperatures == "steady" and steady is None:

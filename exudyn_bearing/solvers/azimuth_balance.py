@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 
 from contact import cage as cage_physics
-from contact.ballrace import ball_race_forces
+from contact.ballrace import ball_race_forces, ball_race_forces_by_race
 from contact.kinematics import ball_race_kinematics
 from ..contact_records import contact_records
 
@@ -21,9 +21,16 @@ _E_Z = np.array([0.0, 0.0, 1.0])
 class _Balance:
     """The balance equations of all balls, the cage and the inner race, vectorized."""
 
-    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial, pose=None, cage_offset=None):
+    def __init__(self, bearing, lubricant, w_i, w_o, drag, law, land, axial, radial, pose=None, cage_offset=None,
+                 oils=None):
         z = bearing.balls
         self.b, self.lub, self.law, self.z = bearing, lubricant, law, z
+        # the inner and outer contacts' and the land's oils where they differ (the thermal
+        # network, MODEL.md §14b): (inner, outer, land) or None
+        self.oils = oils
+        self.land_lubricant = lubricant if oils is None else oils[2]
+        self.race_terms = None if oils is None else tuple(contact_records(bearing, lub, law, balls=z).terms
+                                                          for lub in oils[:2])
         self.land, self.applied = land, np.array([radial, 0.0, axial])
         self.psi = 2.0 * np.pi * np.arange(z) / z
         self.e_r = np.stack([np.cos(self.psi), np.sin(self.psi), np.zeros(z)], axis=1)
@@ -80,12 +87,23 @@ class _Balance:
         states = [self._motion(x) for x in xs]
         b = len(states)
         stack = lambda k: np.concatenate([state[k] for state in states])  # noqa: E731
+        _, f = self._contacts(stack, b)
+        return [self._balance(state, f.force[2 * z * i:2 * z * (i + 1)], f.moment[2 * z * i:2 * z * (i + 1)])
+                for i, state in enumerate(states)]
+
+    def contacts(self, x):
+        """(kinematics, forces) of the 2 Z ball–race contacts (inner, then outer) at ``x``."""
+        state = self._motion(x)
+        return self._contacts(lambda k: state[k], 1)
+
+    def _contacts(self, stack, b):
+        """(kinematics, forces) of the contacts of ``b`` states, ``stack(key)`` their inputs."""
         grooves, signs, params = self.contacts_of(b)
         kin = ball_race_kinematics(stack("both"), stack("v"), stack("w"), stack("origin"), np.eye(3), np.zeros(3),
                                    np.tile(self.race_omega, (b, 1)), grooves, self.b.ball_radius, signs)
-        f = ball_race_forces(kin, params, self.lub, self.law, self.terms)
-        return [self._balance(state, f.force[2 * z * i:2 * z * (i + 1)], f.moment[2 * z * i:2 * z * (i + 1)])
-                for i, state in enumerate(states)]
+        if self.oils is None:
+            return kin, ball_race_forces(kin, params, self.lub, self.law, self.terms)
+        return kin, ball_race_forces_by_race(kin, params, self.oils[:2], self.law, self.race_terms)
 
     def contacts_of(self, b):
         """(groove records, race signs, :class:`~contact.ballrace.RaceContact`) of the

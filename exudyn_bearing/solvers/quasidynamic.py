@@ -35,13 +35,16 @@ from ..bearing import Bearing
 from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..renamed import accepts_old_names
-from ..setup import FROM_SETUP, refuse_surface, refuse_thermal
+from ..setup import FROM_SETUP, refuse_surface
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
 from .azimuth_balance import _Balance
+from .azimuth_power import azimuth_losses, azimuth_operating_point
 from .steady import steady_state
+from .steady_balance import solve_steady, steady_result
+from .thermal import FixedPointPass, fixed_point
 
-__all__ = ["AzimuthStates", "combined_load_state", "pose_state", "seed_axial_load"]
+__all__ = ["AzimuthStates", "combined_load_state", "pose_state", "seed_axial_load", "solve_combined", "failed_states"]
 
 
 
@@ -65,6 +68,17 @@ class AzimuthStates:
     tilt: tuple = (0.0, 0.0)
     #: cage centre, bearing frame, m: on its land where the pockets push it (CageModel.land_seat)
     cage_offset: tuple = (0.0, 0.0, 0.0)
+    #: with the setup's thermal network: its temperatures and heat, as :attr:`SteadyState.thermal`
+    #: (MODEL.md §14d); else None
+    thermal: dict | None = None
+
+
+def failed_states(z: int, message: str, start: float, displacement=(np.nan,) * 3, tilt=(0.0, 0.0)) -> AzimuthStates:
+    """The :class:`AzimuthStates` of ``z`` balls where no balance was found: NaN numbers,
+    ``converged`` False and the ``message``; ``start`` the call's perf_counter."""
+    return AzimuthStates(float("nan"), 2.0 * np.pi * np.arange(z) / z, np.full(z, np.nan), np.full(z, np.nan),
+                         np.full((z, 3), np.nan), np.full(z, np.nan), np.asarray(displacement, dtype=float).copy(),
+                         float("inf"), False, message, _time.perf_counter() - start, np.array(tilt, dtype=float))
 
 
 #: a pure radial load is reached from the steady state at an axial load of this fraction of
@@ -103,24 +117,43 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     the secant extrapolation of the two before; under pure radial load the seed's axial load
     is then taken back to zero the same way. ``converged`` False with a ``message`` where the
     continuation stalls or has taken ``max_steps`` steps (None: no limit); its numbers must
-    then not be used. ``bearing`` a Bearing, a setup or a bearing file's path: the setup's
+    then not be used. ``max_step`` may also be a function of the seed's steady state giving
+    it. ``bearing`` a Bearing, a setup or a bearing file's path: the setup's
     lubricant, drag, law and cage unless passed (a plain Bearing: no cage unless passed);
-    its defects and waviness are refused (they have no steady state)."""
+    its defects and waviness are refused (they have no steady state). A setup with a
+    ``thermal`` model is solved with its network (MODEL.md §14d; ``steady`` is then not used):
+    each iterate's temperatures give the contacts' oils and the grown bearing, its balance the
+    heat, and the result's ``thermal`` the temperatures and where the heat went."""
     start = _time.perf_counter()
     plain = isinstance(bearing, Bearing)
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                      cage=CageModel() if cage is None else cage)
     refuse_surface(setup, "combined_load_state", "simulate or vibration")
-    refuse_thermal(setup, "combined_load_state")
-    bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
     cage = None if cage is None or (plain and cage is FROM_SETUP) else setup.cage
+    if setup.thermal is not None:
+        return _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step,
+                                 start)
     seed = seed_axial_load(axial_force, radial_force)
     if steady is None:
-        steady = steady_state(bearing, lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm, ball_drag=ball_drag,
-                              contact_law=contact_law, cage=cage)
-    law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
+        steady = steady_state(setup.bearing, setup.lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm,
+                              ball_drag=setup.drag, contact_law=setup.contact_law, cage=cage)
+    return solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, steady, tol, max_steps, max_step,
+                          start)[0]
+
+
+def solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, steady, tol, max_steps, max_step, start,
+                   oils=None) -> tuple:
+    """(:class:`AzimuthStates`, the last balance, its scaled unknowns) of
+    :func:`combined_load_state` (checked inputs; ``cage`` None: no cage) from the seed's axial
+    ``steady`` state; ``oils`` (inner contacts', outer contacts', land's lubricant) where they
+    differ from the setup's (the thermal network's, MODEL.md §14b)."""
+    bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
+    seed = seed_axial_load(axial_force, radial_force)
+    law, w_i, w_o, land, y = _from_steady(bearing, lubricant if oils is None else oils[2], steady, contact_law, cage,
+                                          rpm, outer_rpm)
+    max_step = max_step(steady) if callable(max_step) else max_step
     make = lambda load, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
-                                              *load, cage_offset=offset)
+                                              *load, cage_offset=offset, oils=oils)
     largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
     pure_radial = axial_force <= 0 < abs(radial_force)
     y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps,
@@ -133,7 +166,35 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     if message is None:
         y, worst, message, balance = _seat_cage(make, (axial_force, radial_force), y, cage, tol, worst)
     converged = message is None
-    return _states(balance, y, worst, converged, message or "converged", start)
+    return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale
+
+
+def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step, start):
+    """:func:`combined_load_state` of a ``setup`` with a ``thermal`` model: the balance and the
+    network iterated to a fixed point (:func:`~exudyn_bearing.solvers.thermal.fixed_point`,
+    MODEL.md §14d), each iterate's balance continued from the seed's axial steady state at
+    the same temperatures and oils; the result's ``thermal`` as the steady state's."""
+    seed = seed_axial_load(axial_force, radial_force)
+    guidance = setup.cage.guidance
+
+    def solve(running, oils):
+        inner, outer, land = oils
+        solved = solve_steady(running.replace(cage=CageModel() if cage is None else cage), seed, rpm, outer_rpm, tol,
+                              races=(inner, outer), land_lubricant=land)
+        if not solved.converged:
+            return FixedPointPass(None, f"the axial steady state at {seed:g} N: {solved.message}", None, None)
+        states, balance, x = solve_combined(running, cage, axial_force, radial_force, rpm, outer_rpm,
+                                            steady_result(solved, 0.0, {}), tol, max_steps, max_step, start, oils=oils)
+        if not states.converged:
+            return FixedPointPass(states, states.message, None, None)
+        return FixedPointPass(states, None, azimuth_losses(balance, x, guidance), azimuth_operating_point(balance, x))
+
+    states, failure, record = fixed_point(setup, solve)
+    if states is None:  # no balance at any iterate
+        states = failed_states(setup.bearing.balls, failure, start)
+    if failure is not None:
+        states = replace(states, converged=False, message=failure)
+    return replace(states, thermal=record, wall_time_s=_time.perf_counter() - start)
 
 
 def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> AzimuthStates:
@@ -192,9 +253,7 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
     z = bearing.balls
 
     def failed(message):
-        return AzimuthStates(float("nan"), 2.0 * np.pi * np.arange(z) / z, np.full(z, np.nan), np.full(z, np.nan),
-                             np.full((z, 3), np.nan), np.full(z, np.nan), pose[:3].copy(), float("inf"), False,
-                             message, _time.perf_counter() - start, pose[3:].copy())
+        return failed_states(z, message, start, pose[:3], pose[3:])
 
     qs = solve_load_distribution(bearing, displacement=pose, rpm=rpm, outer_rpm=outer_rpm)
     if not np.any(qs.inner_load > 0) or not np.any(qs.outer_load > 0):
@@ -268,7 +327,7 @@ def _seat_cage(make, point, y, cage, tol, worst, max_rounds=10):
     offset = np.zeros(3)
     play = 0.5 * cage.guide_clearance
     moved = np.inf
-    film = cage.land_film_constant(balance.b, balance.lub)
+    film = cage.land_film_constant(balance.b, balance.land_lubricant)
     for _ in range(max_rounds):
         pocket, _, _, w_c, _ = balance.unpack(y / balance.scale)
         seat = cage.land_seat(-(pocket[:, None] * balance.e_p).sum(axis=0), film, w_c + balance.land[1])

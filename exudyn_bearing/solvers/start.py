@@ -10,7 +10,7 @@ import numpy as np
 from .quasidynamic import AzimuthStates, combined_load_state, pose_state, seed_axial_load
 from .steady import steady_state
 
-__all__ = ["steady_start", "mirrored"]
+__all__ = ["steady_start", "mirrored", "continuation_budget", "continuation_step"]
 
 #: the mirror y -> -y of the bearing frame on a pose (dx, dy, dz, theta_x, theta_y): the
 #: displacement is a vector, the tilt a pseudovector
@@ -38,6 +38,23 @@ SKIDDING_START_PERCENT = 1.0
 #: continuation steps (and their halvings) the 'auto' start spends on the quasi-dynamic state
 #: before it falls back to pure rolling: ~0.1 s each on the reference bearing
 AUTO_CONTINUATION_STEPS = 40
+
+
+def continuation_budget(initial_state: str) -> int | None:
+    """Continuation steps the start may spend: :data:`AUTO_CONTINUATION_STEPS` for 'auto',
+    no limit for 'steady'."""
+    return AUTO_CONTINUATION_STEPS if initial_state == "auto" else None
+
+
+def continuation_step(steady, axial_force: float, radial_force: float) -> float | None:
+    """The combined-load start's largest continuation step, N, from the seed's axial
+    ``steady`` state: a bearing that rolls under its axial load alone (kinematic slip <=
+    :data:`SKIDDING_START_PERCENT`) has one balance, so the continuation may take steps of an
+    eighth of the radial load; a skidding one is held to tenths of the axial load, its
+    branch (None: :func:`~exudyn_bearing.solvers.quasidynamic.combined_load_state`'s default)."""
+    if steady.kinematic_cage_slip_percent > SKIDDING_START_PERCENT:
+        return None
+    return max(0.1 * seed_axial_load(axial_force, radial_force), abs(radial_force) / 8)
 
 
 def steady_start(bearing, lubricant, initial_state, *, axial_force, radial_force, rpm_i, rpm_o, sense, inner,
@@ -87,14 +104,10 @@ def steady_start(bearing, lubricant, initial_state, *, axial_force, radial_force
         elif radial_force == 0:
             return state
         else:
-            # a bearing that rolls under its axial load alone has one balance: the continuation
-            # may take long steps; a skidding one is held to tenths of the axial load (its branch)
-            rolls = state.kinematic_cage_slip_percent <= SKIDDING_START_PERCENT
             combined = combined_load_state(bearing, lubricant, axial_force=axial_force, radial_force=radial_force,
                                            rpm=rpm_i, outer_rpm=rpm_o, ball_drag=ball_drag, contact_law=contact_law,
-                                           cage=cage, steady=state,
-                                           max_steps=AUTO_CONTINUATION_STEPS if initial_state == "auto" else None,
-                                           max_step=max(0.1 * seed, abs(radial_force) / 8) if rolls else None)
+                                           cage=cage, steady=state, max_steps=continuation_budget(initial_state),
+                                           max_step=continuation_step(state, axial_force, radial_force))
             if combined.converged:
                 return combined
             why = combined.message

@@ -1,5 +1,6 @@
-"""The steady state with its temperatures: the steady balance (MODEL.md §12) and the bearing's
-thermal network (§14) iterated to a fixed point, heat -> temperatures -> viscosities -> heat.
+"""The steady state with its temperatures: the steady balance (MODEL.md §12), or the
+quasi-dynamic one under combined load (§12a), and the bearing's thermal network (§14) iterated
+to a fixed point, heat -> temperatures -> viscosities -> heat.
 
 Each ball–race contact takes its oil at the mean of its race's and the balls' temperatures,
 the cage land at the mean of the cage's and its guiding ring's (Walther's relation or the
@@ -9,6 +10,7 @@ from __future__ import annotations
 
 import math
 import time as _time
+from typing import NamedTuple
 
 import numpy as np
 
@@ -17,8 +19,8 @@ from contact.thermal_expansion import heated_geometry
 from .steady_balance import solve_steady, steady_result
 from .steady_power import steady_losses
 
-__all__ = ["thermal_steady_state", "thermal_geometry", "contact_oils", "heated", "axial_pressing",
-           "TEMPERATURE_TOLERANCE_K", "MAX_ITERATIONS"]
+__all__ = ["thermal_steady_state", "fixed_point", "FixedPointPass", "thermal_geometry", "contact_oils", "heated",
+           "axial_pressing", "TEMPERATURE_TOLERANCE_K", "MAX_ITERATIONS"]
 
 #: the fixed point is reached when no node's temperature changes by more than this, K
 TEMPERATURE_TOLERANCE_K = 0.01
@@ -80,10 +82,20 @@ def _rises(model, temperatures: dict) -> tuple:
     return tuple(temperatures[k] - model.assembly_temperature for k in ("inner_ring", "outer_ring", "balls"))
 
 
-def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
-    """The :class:`~exudyn_bearing.solvers.steady.SteadyState` of ``setup`` (with its
-    ``thermal`` model) and its temperatures (MODEL.md §14d); called by
-    :func:`~exudyn_bearing.steady_state` with checked inputs."""
+class FixedPointPass(NamedTuple):
+    """One balance solved at a fixed point iterate's temperatures (:func:`fixed_point`)."""
+
+    state: object  #: what the balance's solver returned
+    failure: str | None  #: why it has no state to use (None: converged)
+    losses: dict | None  #: W by place (HEAT_SPLIT's names), where converged
+    point: OperatingPoint | None  #: the network's operating point, where converged
+
+
+def fixed_point(setup, solve) -> tuple:
+    """The bearing's balance and thermal network iterated to a fixed point (MODEL.md §14d):
+    ``solve(running, oils)`` solves the balance of ``running`` (``setup`` grown to the
+    iterate's temperatures) with the (inner, outer, land) ``oils`` and returns a :class:`FixedPointPass`.
+    Returns (the last pass's state, why it is not a result or None, the ``thermal`` record)."""
     model, lubricant = setup.thermal, setup.lubricant
     geometry = thermal_geometry(setup)
     oil_fraction = 1.0 if setup.drag is None else setup.drag.oil_volume_fraction
@@ -91,7 +103,7 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
     temperatures = {name: t_in for name in NODES}
     relax, last_change, history, solved = 1.0, math.inf, [], None
     for iteration in range(1, MAX_ITERATIONS + 1):
-        inner, outer, land = contact_oils(lubricant, temperatures, setup.cage.guidance)
+        oils = contact_oils(lubricant, temperatures, setup.cage.guidance)
         try:
             running = heated(setup, temperatures)
         except ValueError as err:  # the clearance closed: no steady state at these temperatures
@@ -99,17 +111,13 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
                 raise
             why, grown = err, None
         else:
-            solved = solve_steady(running, axial_force, rpm, outer_rpm, tol, races=(inner, outer),
-                                  land_lubricant=land)
-            why, grown = (None if solved.converged else solved.message), running.bearing
+            solved = solve(running, oils)
+            why, grown = solved.failure, running.bearing
         if why is not None:
-            message = f"thermal iteration {iteration}: {why}"
-            return steady_result(solved._replace(converged=False, message=message), _time.perf_counter() - start,
-                                 inputs, thermal=_record(None, None, temperatures, (inner, outer, land), iteration,
-                                                         False, history, bearing=grown))
-        losses = steady_losses(solved)
-        network = bearing_network(model, geometry, operating_point(solved), lubricant, oil_fraction,
-                                  temperatures["oil"])
+            return solved.state, f"thermal iteration {iteration}: {why}", _record(
+                None, None, temperatures, oils, iteration, False, history, bearing=grown)
+        losses = solved.losses
+        network = bearing_network(model, geometry, solved.point, lubricant, oil_fraction, temperatures["oil"])
         new = network.steady(place_heat(losses))
         change = max(abs(new[k] - temperatures[k]) for k in NODES)
         history.append(change)
@@ -124,11 +132,27 @@ def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs)
             raise ValueError(f"steady_state: the thermal network diverged at iteration {iteration} "
                              f"(temperatures {temperatures})")
     converged = history[-1] < TEMPERATURE_TOLERANCE_K
-    if not converged:
-        solved = solved._replace(converged=False, message=(
-            f"thermal fixed point not reached in {MAX_ITERATIONS} iterations (last change {history[-1]:.3g} K)"))
-    record = _record(network, losses, temperatures, (inner, outer, land), len(history), converged, history,
+    failure = None if converged else (f"thermal fixed point not reached in {MAX_ITERATIONS} iterations "
+                                      f"(last change {history[-1]:.3g} K)")
+    record = _record(network, losses, temperatures, oils, len(history), converged, history,
                      bearing=running.bearing, cold=setup.bearing)
+    return solved.state, failure, record
+
+
+def thermal_steady_state(setup, axial_force, rpm, outer_rpm, tol, start, inputs):
+    """The :class:`~exudyn_bearing.solvers.steady.SteadyState` of ``setup`` (with its
+    ``thermal`` model) and its temperatures (MODEL.md §14d); called by
+    :func:`~exudyn_bearing.steady_state` with checked inputs."""
+    def solve(running, oils):
+        inner, outer, land = oils
+        solved = solve_steady(running, axial_force, rpm, outer_rpm, tol, races=(inner, outer), land_lubricant=land)
+        if not solved.converged:
+            return FixedPointPass(solved, solved.message, None, None)
+        return FixedPointPass(solved, None, steady_losses(solved), operating_point(solved))
+
+    solved, failure, record = fixed_point(setup, solve)
+    if failure is not None:
+        solved = solved._replace(converged=False, message=failure)
     return steady_result(solved, _time.perf_counter() - start, inputs, thermal=record)
 
 

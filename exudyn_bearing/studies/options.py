@@ -175,8 +175,9 @@ def _temperature_options(p) -> None:
                    help="integrate the thermal network with the bodies (MODEL.md §14g): the bearing file's "
                         "[thermal], else its defaults; a file with [thermal] runs it without this flag")
     p.add_argument("--initial-temperatures", choices=("auto", "steady", "inlet"), default="auto",
-                   help="with temperatures: start from the thermal steady state (pure axial load), every node at "
-                        "the oil inlet, or auto (steady where it applies, else inlet)")
+                   help="with temperatures: start from the thermal steady state (constant loads; combined "
+                        "or radial: the quasi-dynamic one), every node at the oil inlet, or auto (steady where "
+                        "it applies, else inlet)")
 
 
 def _vibration_options(p) -> None:

@@ -1,0 +1,70 @@
+"""Where the power goes in a quasi-dynamic state under combined load (MODEL.md §11, §12a): the
+losses of every ball at its azimuth, by place, the power the races' drives put in, and the
+operating point the thermal network's conductances read (§14a).
+
+The quasi-dynamic state is steady in the cage's frame: nothing accelerates but the balls'
+spins, carried along the orbit without loss, so the drive power equals the losses. The two
+are computed independently (the drive from the race torques, the losses from each force's
+power over the velocities it acts against), as for the axial steady state
+(:mod:`exudyn_bearing.solvers.steady_power`); their difference checks the balance.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from contact.bearing_thermal import OperatingPoint, mean_contact
+
+__all__ = ["azimuth_losses", "azimuth_drive_power", "azimuth_operating_point"]
+
+
+def azimuth_losses(balance, x, guidance: str) -> dict:
+    """Losses of the whole bearing in the quasi-dynamic state ``x`` (scaled unknowns) of
+    ``balance`` (:class:`~exudyn_bearing.solvers.azimuth_balance._Balance`), W, by place as
+    :data:`contact.bearing_thermal.HEAT_SPLIT` names them: each race's contacts (traction and
+    spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b), ``ball_drag`` (§11c), the land of the
+    ``guidance`` ('inner' or 'outer') race (K Δω², §11d) and ``pockets`` (none: the balls
+    orbit with their pockets, which have no friction in this balance)."""
+    z = balance.z
+    _, f = balance.contacts(x)
+    state = balance._motion(x)
+    out = {"inner_contacts": float(np.sum(f.heat[:z])), "outer_contacts": float(np.sum(f.heat[z:])),
+           "rolling_resistance": 0.0 if f.rolling_loss is None else float(np.sum(f.rolling_loss))}
+    speed = np.linalg.norm(state["v"][:z], axis=1)
+    out["ball_drag"] = float(np.sum(0.5 * balance.c_d * balance.density * np.pi * balance.b.ball_radius ** 2
+                                    * speed ** 3))
+    k_land, w_land = balance.land
+    out["land_inner" if guidance == "inner" else "land_outer"] = k_land * (w_land - state["w_c"]) ** 2
+    out["pockets"] = 0.0
+    return out
+
+
+def azimuth_drive_power(balance, x) -> float:
+    """Power the races' drives put in, W: each race turns at its speed against the torque
+    the balls put on it about the axis, −Σ_j (c_j × F_j + M_j)_z (F, M the contact's force and
+    moment about the ball centre on the ball, in each ball's azimuth frame), so its drive
+    puts in Σ_j (c_j × F_j + M_j)_z times its speed; and the guiding race against the land's."""
+    z = balance.z
+    _, f = balance.contacts(x)
+    c = np.concatenate([balance._motion(x)["c"]] * 2)
+    torque = (np.cross(c, f.force) + f.moment)[:, 2]
+    w_i, w_o = balance.race_omega[0, 2], balance.race_omega[z, 2]
+    k_land, w_land = balance.land
+    w_c = balance._motion(x)["w_c"]
+    return float(np.sum(torque[:z])) * w_i + float(np.sum(torque[z:])) * w_o + k_land * (w_land - w_c) * w_land
+
+
+def azimuth_operating_point(balance, x) -> OperatingPoint:
+    """The network's :class:`OperatingPoint` (eq. 14.4, 14.5): race and cage speeds, the balls'
+    mean spin speed, and per race its loaded contacts' mean Hertz semi-axes, central film and
+    rolling speed (as the dynamic run's, :func:`exudyn_bearing.model.thermal_nodes.operating_point_of`)."""
+    z = balance.z
+    kin, f = balance.contacts(x)
+    state = balance._motion(x)
+    _, hertz = balance.params.hertz(kin.contact_angle, balance.law.hertz_method)
+    a, b = hertz.semi_axes(f.normal_load)
+    speed = np.abs(kin.entrainment)
+    contacts = [mean_contact(a[part], b[part], f.film_thickness[part], speed[part], f.normal_load[part])
+                for part in (slice(0, z), slice(z, 2 * z))]
+    spin = float(np.mean(np.linalg.norm(state["w_b"], axis=1)))
+    return OperatingPoint(float(balance.race_omega[0, 2]), float(balance.race_omega[z, 2]), float(state["w_c"]),
+                          spin, *contacts)

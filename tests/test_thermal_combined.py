@@ -1,0 +1,109 @@
+"""The thermal steady state under combined load (issue 51; MODEL.md §14d with §12a): the
+quasi-dynamic balance and the thermal network iterated to a fixed point, and the dynamic run
+that starts from it."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+exu = pytest.importorskip("exudyn")
+
+from contact.bearing_thermal import NODES, ThermalModel, inlet_temperature  # noqa: E402
+from exudyn_bearing import REFERENCE_BEARING, BearingSetup, simulate, steady_state  # noqa: E402
+from exudyn_bearing.bearingfile import BearingFile, save_bearing  # noqa: E402
+from exudyn_bearing.solvers.azimuth_power import azimuth_drive_power, azimuth_losses  # noqa: E402
+from exudyn_bearing.solvers.quasidynamic import combined_load_state, solve_combined  # noqa: E402
+
+HOT = BearingSetup(REFERENCE_BEARING).replace(thermal=ThermalModel())
+T_IN = inlet_temperature(HOT.thermal, HOT.lubricant)  # K
+
+
+def test_a_vanishing_radial_load_is_the_axial_thermal_steady_state():
+    """At 1300 N axial + 1 N radial the combined-load fixed point (every ball in its own
+    balance, 16 balls) lands where the axial steady state's (one ball, a different solver)
+    does: node temperatures within 5 mK, the heat of each place within 0.1 %."""
+    combined = combined_load_state(HOT, axial_force=1300.0, radial_force=1.0, rpm=1800.0)
+    axial = steady_state(HOT, axial_force=1300.0, rpm=1800.0)
+    assert combined.converged and axial.converged, (combined.message, axial.message)
+    for node in NODES:
+        assert combined.thermal["temperatures_K"][node] == pytest.approx(axial.thermal["temperatures_K"][node],
+                                                                         abs=5e-3), node
+    for place, watts in axial.thermal["heat_by_place_W"].items():
+        assert combined.thermal["heat_by_place_W"][place] == pytest.approx(watts, rel=1e-3, abs=1e-6), place
+    rise = combined.thermal["temperatures_K"]["balls"] - T_IN
+    assert rise > 1.0  # the fixed point moved the temperatures: the comparison is not of two inlet states
+
+
+def test_the_combined_thermal_state_balances_heat_and_power():
+    """2.2 kN + 2 kN: the heat the balance makes leaves through the oil and the housing
+    (0.1 %), and in the isothermal quasi-dynamic state the drive power equals the losses
+    summed place by place (two independent computations, 1e-4), with and without the cage's
+    land."""
+    state = combined_load_state(HOT, axial_force=2200.0, radial_force=2000.0, rpm=1800.0)
+    assert state.converged, state.message
+    th = state.thermal
+    assert abs(th["heat_balance_percent"]) < 0.1
+    assert sum(th["heat_W"].values()) == pytest.approx(sum(th["heat_by_place_W"].values()), rel=1e-9)
+    assert th["running_geometry"]["diametral_clearance_change_m"] != 0.0
+    assert th["contact_oil_temperature_K"]["inner"] > T_IN + 1.0
+    for land in (0.0, 4e-3):
+        cold = BearingSetup(REFERENCE_BEARING).replace(cage=HOT.cage.__class__(land_width=land))
+        seed = steady_state(cold, axial_force=2200.0, rpm=1800.0)
+        _, balance, x = solve_combined(cold, cold.cage, 2200.0, 2000.0, 1800.0, 0.0, seed, 1e-8, None, None, 0.0)
+        losses = azimuth_losses(balance, x, cold.cage.guidance)
+        assert azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
+        assert (losses.get("land_outer", 0.0) > 1.0) == (land > 0)
+
+
+@pytest.fixture(scope="module")
+def runs():
+    """0.01 s under 2.2 kN + 2 kN from the combined thermal start ('auto') and from the inlet."""
+    return {start: simulate(HOT, axial_force=2200.0, radial_force=2000.0, time=0.01, initial_temperatures=start)
+            for start in ("auto", "inlet")}
+
+
+def test_a_run_from_the_combined_thermal_start_holds_its_temperatures(runs):
+    """'auto' under combined load starts from the combined thermal steady state: its nodes
+    move by less than 1/100 of what a run from the inlet temperature moves over the same
+    0.01 s, and the run's heat by place at its start is the fixed point's within 2 %."""
+    hot, inlet = runs["auto"].thermal, runs["inlet"].thermal
+    assert hot["start"] == "steady" and inlet["start"] == "inlet"
+    state = combined_load_state(HOT, axial_force=2200.0, radial_force=2000.0, rpm=1800.0)
+    start = state.thermal["temperatures_K"]
+    moved = max(abs(hot["temperatures_K"][n] - start[n]) for n in NODES)
+    inlet_moved = max(abs(inlet["temperatures_K"][n] - T_IN) for n in NODES)
+    assert moved < 0.01 * inlet_moved
+    for place in ("inner_contacts", "outer_contacts", "ball_drag"):
+        assert hot["heat_by_place_W"][place] == pytest.approx(state.thermal["heat_by_place_W"][place], rel=0.02)
+
+
+def test_the_cli_and_a_plain_scene_take_the_combined_thermal_start(tmp_path):
+    """The same start from the CLI (a bearing file's [thermal] section) and from a plain
+    Exudyn scene solved by SolveDynamic."""
+    path = tmp_path / "hot.toml"
+    save_bearing(BearingFile(REFERENCE_BEARING, thermal=ThermalModel()), path)
+    proc = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--bearing", str(path), "--axial", "2200",
+                           "--radial", "2000", "--time", "0.002", "--json"], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    out = json.loads(proc.stdout)
+    assert out["thermal"]["start"] == "steady"
+    assert out["thermal"]["temperatures_K"]["balls"] > T_IN + 1.0
+
+    mbs = exu.SystemContainer().AddSystem()
+    from exudyn_bearing import races
+
+    h = mbs.CreateAngularContactBearing(HOT, innerRace=races.Driven(1800.0), axialForce=2200.0, radialForce=2000.0,
+                                        show=False)
+    mbs.Assemble()
+    s = exu.SimulationSettings()
+    s.timeIntegration.endTime, s.timeIntegration.numberOfSteps = 0.002, 20
+    s.timeIntegration.verboseMode = 0
+    exu.SolveDynamic(mbs, s)
+    assert h.temperatures.start.kind == "steady"
+    now = h.temperatures.temperatures(mbs)
+    assert np.all(np.isfinite(list(now.values())))
+    assert now["balls"] == pytest.approx(out["thermal"]["temperatures_K"]["balls"], abs=0.05)
