@@ -259,7 +259,8 @@ def test_a_batch_of_balances_is_each_balance_alone():
     from contact.ballrace import ContactLaw
     from exudyn_bearing.solvers import quasidynamic
     steady = steady_state(B, REFERENCE_LUBRICANT, axial_force=800.0, rpm=1800.0, ball_drag=REFERENCE_DRAG)
-    law, w_i, w_o, land, y = quasidynamic._from_steady(B, REFERENCE_LUBRICANT, steady, ContactLaw(), None, 1800.0, 0.0)
+    law, w_i, w_o, land = quasidynamic._balance_inputs(B, REFERENCE_LUBRICANT, ContactLaw(), None, 1800.0, 0.0)
+    y = quasidynamic._steady_unknowns(B, steady)
     rng = np.random.default_rng(3)
     for kw in (dict(cage_offset=(20e-6, -5e-6, 0.0)), dict(pose=(2e-6, 1e-6, steady.inner_race_shift, 2e-5, 0.0))):
         balance = quasidynamic._Balance(B, REFERENCE_LUBRICANT, w_i, w_o, REFERENCE_DRAG, law, land, 800.0, 300.0, **kw)

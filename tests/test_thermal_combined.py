@@ -53,7 +53,8 @@ def test_the_combined_thermal_state_balances_heat_and_power():
     for land in (0.0, 4e-3):
         cold = BearingSetup(REFERENCE_BEARING).replace(cage=HOT.cage.__class__(land_width=land))
         seed = steady_state(cold, axial_force=2200.0, rpm=1800.0)
-        _, balance, x = solve_combined(cold, cold.cage, 2200.0, 2000.0, 1800.0, 0.0, seed, 1e-8, None, None, 0.0)
+        _, balance, x, _ = solve_combined(cold, cold.cage, 2200.0, 2000.0, 1800.0, 0.0, seed, 1e-8, None, None,
+                                          0.0)
         losses = azimuth_losses(balance, x, cold.cage.guidance)
         assert azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
         assert (losses.get("land_outer", 0.0) > 1.0) == (land > 0)
@@ -107,3 +108,32 @@ def test_the_cli_and_a_plain_scene_take_the_combined_thermal_start(tmp_path):
     now = h.temperatures.temperatures(mbs)
     assert np.all(np.isfinite(list(now.values())))
     assert now["balls"] == pytest.approx(out["thermal"]["temperatures_K"]["balls"], abs=0.05)
+
+
+def test_later_iterates_start_from_the_last_balance(monkeypatch):
+    """After the first iterate's continuation, each fixed-point iterate's balance is Newton's
+    from the last one's: one continuation for 2.2 kN + 2 kN instead of one per iterate, and
+    the same fixed point as with a continuation every time (temperatures within its 0.01-K
+    test, the cage speed within 1e-6)."""
+    from exudyn_bearing.solvers import quasidynamic
+
+    solve = quasidynamic.solve_combined
+    calls = []
+
+    def counted(*a, warm=None, **k):
+        calls.append(warm is not None)
+        return solve(*a, warm=warm, **k)
+
+    monkeypatch.setattr(quasidynamic, "solve_combined", counted)
+    warm = combined_load_state(HOT, axial_force=2200.0, radial_force=2000.0, rpm=1800.0)
+    assert calls.count(False) == 1 and calls.count(True) == warm.thermal["iterations"] - 1 >= 1
+    def continued(*a, warm=None, **k):  # every warm start refused: the continuation each time
+        if warm is not None:
+            return quasidynamic.failed_states(REFERENCE_BEARING.balls, "refused", 0.0), None, None, None
+        return solve(*a, **k)
+
+    monkeypatch.setattr(quasidynamic, "solve_combined", continued)
+    cold = combined_load_state(HOT, axial_force=2200.0, radial_force=2000.0, rpm=1800.0)
+    for node in NODES:
+        assert warm.thermal["temperatures_K"][node] == pytest.approx(cold.thermal["temperatures_K"][node], abs=0.01)
+    assert warm.cage_speed == pytest.approx(cold.cage_speed, rel=1e-6)

@@ -142,49 +142,68 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
 
 
 def solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, steady, tol, max_steps, max_step, start,
-                   oils=None) -> tuple:
-    """(:class:`AzimuthStates`, the last balance, its scaled unknowns) of
-    :func:`combined_load_state` (checked inputs; ``cage`` None: no cage) from the seed's axial
-    ``steady`` state; ``oils`` (inner contacts', outer contacts', land's lubricant) where they
-    differ from the setup's (the thermal network's, MODEL.md §14b)."""
+                   oils=None, warm=None) -> tuple:
+    """(:class:`AzimuthStates`, the last balance, its scaled unknowns, the unscaled unknowns of
+    its centred cage) of :func:`combined_load_state` (checked inputs; ``cage`` None: no cage)
+    from the seed's axial ``steady`` state; ``oils`` (inner contacts', outer contacts', land's
+    lubricant) where they differ from the setup's (the thermal network's, MODEL.md §14b).
+    ``warm``: instead, Newton at the load from these unknowns of a centred cage (a nearby
+    balance's, e.g. the thermal fixed point's last iterate) and the cage seated from there;
+    not converged where that Newton fails (``steady`` is then not used)."""
     bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
     seed = seed_axial_load(axial_force, radial_force)
-    law, w_i, w_o, land, y = _from_steady(bearing, lubricant if oils is None else oils[2], steady, contact_law, cage,
-                                          rpm, outer_rpm)
-    max_step = max_step(steady) if callable(max_step) else max_step
+    law, w_i, w_o, land = _balance_inputs(bearing, lubricant if oils is None else oils[2], contact_law, cage, rpm,
+                                          outer_rpm)
     make = lambda load, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
                                               *load, cage_offset=offset, oils=oils)
-    largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
-    pure_radial = axial_force <= 0 < abs(radial_force)
-    y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol, max_steps,
-                                                 _load_text, reserve=RETURN_STEPS if pure_radial else 0)
-    if message is None and pure_radial:
-        y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force),
-                                                     seed / RETURN_STEPS, tol, left, _load_text)
-    if balance is None:  # no load step: the steady state itself
-        balance = make((axial_force, 0.0))
+    load = (axial_force, radial_force)
+    if warm is not None:
+        balance = make(load)
+        x, worst, _ = damped_newton(balance.residual, warm / balance.scale, *balance.bounds(), tol, balance.jacobian,
+                                    max_iterations=STEP_JACOBIANS, reuse_jacobian=True)
+        y, message = x * balance.scale, None if worst <= tol else f"Newton from the nearby balance: {worst:.2g}"
+    else:
+        y = _steady_unknowns(bearing, steady)
+        max_step = max_step(steady) if callable(max_step) else max_step
+        largest = max(0.1 * seed, 1e-3 * abs(radial_force)) if max_step is None else max_step
+        pure_radial = axial_force <= 0 < abs(radial_force)
+        y, worst, message, balance, left = _continue(make, y, (seed, 0.0), (seed, radial_force), largest, tol,
+                                                     max_steps, _load_text, reserve=RETURN_STEPS if pure_radial else 0)
+        if message is None and pure_radial:
+            y, worst, message, balance, left = _continue(make, y, (seed, radial_force), (0.0, radial_force),
+                                                         seed / RETURN_STEPS, tol, left, _load_text)
+        if balance is None:  # no load step: the steady state itself
+            balance = make((axial_force, 0.0))
+    centred = y.copy()
     if message is None:
-        y, worst, message, balance = _seat_cage(make, (axial_force, radial_force), y, cage, tol, worst)
+        y, worst, message, balance = _seat_cage(make, load, y, cage, tol, worst)
     converged = message is None
-    return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale
+    return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale, centred
 
 
 def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step, start):
     """:func:`combined_load_state` of a ``setup`` with a ``thermal`` model: the balance and the
     network iterated to a fixed point (:func:`~exudyn_bearing.solvers.thermal.fixed_point`,
-    MODEL.md §14d), each iterate's balance continued from the seed's axial steady state at
-    the same temperatures and oils; the result's ``thermal`` as the steady state's."""
+    MODEL.md §14d). The first iterate's balance is continued from the seed's axial steady
+    state at its temperatures and oils; each later one is Newton's from the iterate before
+    (the continuation again where that fails). The result's ``thermal`` as the steady state's."""
     seed = seed_axial_load(axial_force, radial_force)
     guidance = setup.cage.guidance
+    last = {}  # the centred unknowns of the last iterate's balance
 
     def solve(running, oils):
-        inner, outer, land = oils
-        solved = solve_steady(running.replace(cage=CageModel() if cage is None else cage), seed, rpm, outer_rpm, tol,
-                              races=(inner, outer), land_lubricant=land)
-        if not solved.converged:
-            return FixedPointPass(None, f"the axial steady state at {seed:g} N: {solved.message}", None, None)
-        states, balance, x = solve_combined(running, cage, axial_force, radial_force, rpm, outer_rpm,
-                                            steady_result(solved, 0.0, {}), tol, max_steps, max_step, start, oils=oils)
+        args = (running, cage, axial_force, radial_force, rpm, outer_rpm)
+        found = None
+        if "centred" in last:
+            found = solve_combined(*args, None, tol, max_steps, max_step, start, oils=oils, warm=last["centred"])
+        if found is None or not found[0].converged:
+            inner, outer, land = oils
+            solved = solve_steady(running.replace(cage=CageModel() if cage is None else cage), seed, rpm, outer_rpm,
+                                  tol, races=(inner, outer), land_lubricant=land)
+            if not solved.converged:
+                return FixedPointPass(None, f"the axial steady state at {seed:g} N: {solved.message}", None, None)
+            found = solve_combined(*args, steady_result(solved, 0.0, {}), tol, max_steps, max_step, start, oils=oils)
+        states, balance, x, last["centred"] = found
         if not states.converged:
             return FixedPointPass(states, states.message, None, None)
         return FixedPointPass(states, None, azimuth_losses(balance, x, guidance), azimuth_operating_point(balance, x))
@@ -205,14 +224,19 @@ def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> Az
                          tuple(balance.cage_offset))
 
 
-def _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm):
-    """(law, w_i, w_o, the cage land's load, the unscaled unknowns of ``steady``): the
-    continuation's start, every ball in the steady state's balance."""
+def _balance_inputs(bearing, lubricant, contact_law, cage, rpm, outer_rpm):
+    """(law, w_i, w_o, the cage land's load) of the balances: the land's from ``lubricant``."""
     # the accurate traction rule (smooth for the root finder); order 8 gives the order-16 cage
     # speed to 2e-5 (400 N + 300 N: 46.149 / 46.150 rad/s) at 60 % of its cost
     law = replace(contact_law, fast_quadrature=False, quadrature_order=8)
     w_i, w_o = rpm * math.pi / 30.0, outer_rpm * math.pi / 30.0
     land = (0.0, 0.0) if cage is None else cage.centred_land_load(bearing, lubricant, w_i, w_o)
+    return law, w_i, w_o, land
+
+
+def _steady_unknowns(bearing, steady):
+    """The unscaled unknowns of the axial ``steady`` state: every ball in its balance, the
+    continuation's start."""
     z = bearing.balls
     y = np.zeros(6 * z + 4)
     per = y[:6 * z].reshape(z, 6)
@@ -221,7 +245,7 @@ def _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm):
     per[:, 5] = steady.ball_axial_position
     y[6 * z] = steady.cage_speed
     y[-1] = steady.inner_race_shift
-    return law, w_i, w_o, land, y
+    return y
 
 
 #: continuation steps from the steady state's pose to a prescribed one (:func:`pose_state`):
@@ -266,7 +290,8 @@ def pose_state(bearing, lubricant, *, pose, rpm: float, outer_rpm: float = 0.0, 
                           contact_law=contact_law, cage=cage)
     if not steady.converged:
         return failed(steady.message)
-    law, w_i, w_o, land, y = _from_steady(bearing, lubricant, steady, contact_law, cage, rpm, outer_rpm)
+    law, w_i, w_o, land = _balance_inputs(bearing, lubricant, contact_law, cage, rpm, outer_rpm)
+    y = _steady_unknowns(bearing, steady)
     radius = bearing.pitch_radius  # tilts travel the path as the arc they move at the pitch circle
     scale = np.array([1.0, 1.0, 1.0, radius, radius])
     make = lambda point, offset=None: _Balance(bearing, lubricant, w_i, w_o, ball_drag, law, land,  # noqa: E731
