@@ -275,6 +275,7 @@ def test_many_contacts_on_threads_are_the_serial_kernel(monkeypatch):
     args = (ux, uy, om, a, b, pm, h, LUB)
     kw = dict(limiting_shear=0.047, film_modulus=0.2953, entrainment=ent)
     threaded = compiled.crook_fast(*args, **kw)
+    assert crook._crook_many_prange.signatures  # the threaded loop ran
     box = {}
     worker = threading.Thread(target=lambda: box.setdefault("f", compiled.crook_fast(*args, **kw)))
     worker.start()

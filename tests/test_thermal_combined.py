@@ -17,6 +17,7 @@ from exudyn_bearing import REFERENCE_BEARING, BearingSetup, simulate, steady_sta
 from exudyn_bearing.bearingfile import BearingFile, save_bearing  # noqa: E402
 from exudyn_bearing.solvers.azimuth_power import azimuth_drive_power, azimuth_losses  # noqa: E402
 from exudyn_bearing.solvers.quasidynamic import combined_load_state, solve_combined  # noqa: E402
+from exudyn_bearing.solvers.steady_balance import solve_steady, steady_result  # noqa: E402
 
 HOT = BearingSetup(REFERENCE_BEARING).replace(thermal=ThermalModel())
 T_IN = inlet_temperature(HOT.thermal, HOT.lubricant)  # K
@@ -58,6 +59,29 @@ def test_the_combined_thermal_state_balances_heat_and_power():
         losses = azimuth_losses(balance, x, cold.cage.guidance)
         assert azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
         assert (losses.get("land_outer", 0.0) > 1.0) == (land > 0)
+    # each race's contacts and the land on their own oils (the thermal iterates' balances)
+    oils = tuple(HOT.lubricant.at_temperature(c) for c in (70.0, 45.0, 55.0))
+    solved = solve_steady(HOT, 2200.0, 1800.0, 0.0, 1e-8, races=oils[:2], land_lubricant=oils[2])
+    states, balance, x, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_result(solved, 0.0, {}),
+                                           1e-8, None, None, 0.0, oils=oils)
+    losses = azimuth_losses(balance, x, HOT.cage.guidance)
+    assert states.converged and azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
+    _, base, y, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_state(
+        BearingSetup(REFERENCE_BEARING), axial_force=2200.0, rpm=1800.0), 1e-8, None, None, 0.0)
+    # the films thin as each race's oil: (eta / eta_30C)^0.67 (Hamrock-Dowson) within 10 %
+    film, film_30 = (b.contacts(v)[1].film_thickness for b, v in ((balance, x), (base, y)))
+    z = REFERENCE_BEARING.balls
+    for part, oil in ((slice(0, z), oils[0]), (slice(z, 2 * z), oils[1])):
+        ratio = np.mean(film[part]) / np.mean(film_30[part])
+        assert ratio == pytest.approx((oil.viscosity / HOT.lubricant.viscosity) ** 0.67, rel=0.1)
+
+
+def test_bad_inputs_are_refused_by_name():
+    for kw, name in ((dict(axial_force=-300.0), "axial_force"), (dict(radial_force=float("nan")), "radial_force"),
+                     (dict(rpm=0.0), "outer_rpm"), (dict(steady=object()), "steady")):
+        args = dict(axial_force=2200.0, radial_force=2000.0, rpm=1800.0) | kw
+        with pytest.raises(ValueError, match=name):
+            combined_load_state(HOT, **args)
 
 
 @pytest.fixture(scope="module")

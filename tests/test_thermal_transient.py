@@ -205,8 +205,9 @@ def test_a_deep_groove_bearing_under_radial_load_starts_hot_in_a_plain_scene():
     """Plain SolveDynamic, the Case Western 6205 (15 um play) under radial load, at its
     recommended step and tolerance: 'auto' starts from the thermal steady state under that
     load (the quasi-dynamic balance with the network, MODEL.md §14d; until session 41 every
-    node at the inlet); the heat into the nodes is each update's loss breakdown and the
-    energy is kept (1e-6)."""
+    node at the inlet), so it stores less than 1 % of the heat it makes; the heat into the
+    nodes is each update's loss breakdown, and the stored energy equals the heat made less
+    the heat removed to 1e-6 of the heat made."""
     fields = {f.name: getattr(CWRU_6205_BEARING, f.name) for f in dataclasses.fields(CWRU_6205_BEARING)
               if f.name != "contact_angle"}
     setup = BearingSetup(Bearing.from_clearance(diametral_clearance=15e-6, **fields), thermal=ThermalModel())

@@ -280,7 +280,9 @@ class ThermalStart(NamedTuple):
     temperatures: dict  #: {node: K}
     setup: object  #: the setup with its bearing grown to the temperatures (MODEL.md §14f)
     start_setup: object  #: the same with the start's one oil (the start solvers take one)
-    steady: object  #: the thermal :class:`SteadyState` started from, or None
+    #: the thermal :class:`SteadyState` (axial load) or :class:`AzimuthStates` (combined or radial
+    #: load) started from, or None
+    steady: object
     geometry: object  #: the network's sizes (:func:`~exudyn_bearing.solvers.thermal.thermal_geometry`, as given)
     cold: object  #: the setup as given (its bearing at the assembly temperature)
 
@@ -303,8 +305,12 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
     if initial_temperatures not in ("auto", "steady", "inlet"):
         raise ValueError(f"initialTemperatures must be 'auto', 'steady' or 'inlet', got {initial_temperatures!r}")
     why = None
-    if not (constant_load and (radial != 0 or axial > 0)):
+    if not constant_load:
         why = "it needs constant loads"
+    elif not (radial != 0 or axial > 0):
+        why = "it needs a load"
+    elif axial < 0:
+        why = "under radial load it needs an axial load >= 0"
     elif inner_kind not in ("driven", "free") or not rpm_i > 0:
         why = "it needs a Driven or Free inner race turning forwards"
     elif initial_state == "rolling":

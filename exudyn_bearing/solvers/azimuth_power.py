@@ -29,7 +29,7 @@ def azimuth_losses(balance, x, guidance: str) -> dict:
     state = balance._motion(x)
     out = {"inner_contacts": float(np.sum(f.heat[:z])), "outer_contacts": float(np.sum(f.heat[z:])),
            "rolling_resistance": 0.0 if f.rolling_loss is None else float(np.sum(f.rolling_loss))}
-    speed = np.linalg.norm(state["v"][:z], axis=1)
+    speed = np.abs(state["v"][:z, 1])  # about the bearing axis, as the drag acts (contact.cage.drag_forces)
     out["ball_drag"] = float(np.sum(0.5 * balance.c_d * balance.density * np.pi * balance.b.ball_radius ** 2
                                     * speed ** 3))
     k_land, w_land = balance.land

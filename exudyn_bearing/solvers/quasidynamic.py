@@ -121,7 +121,7 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     it. ``bearing`` a Bearing, a setup or a bearing file's path: the setup's
     lubricant, drag, law and cage unless passed (a plain Bearing: no cage unless passed);
     its defects and waviness are refused (they have no steady state). A setup with a
-    ``thermal`` model is solved with its network (MODEL.md §14d; ``steady`` is then not used):
+    ``thermal`` model is solved with its network (MODEL.md §14d; ``steady`` must then be None):
     each iterate's temperatures give the contacts' oils and the grown bearing, its balance the
     heat, and the result's ``thermal`` the temperatures and where the heat went."""
     start = _time.perf_counter()
@@ -129,8 +129,19 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                      cage=CageModel() if cage is None else cage)
     refuse_surface(setup, "combined_load_state", "simulate or vibration")
+    for name, value in (("axial_force", axial_force), ("radial_force", radial_force), ("rpm", rpm),
+                        ("outer_rpm", outer_rpm)):
+        if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value!r}")
+    if axial_force < 0:
+        raise ValueError(f"axial_force must be >= 0 (the balance's races are pressed one way), got {axial_force!r}")
+    if rpm == outer_rpm:
+        raise ValueError("rpm, outer_rpm: the races turn at the same speed; nothing rolls")
     cage = None if cage is None or (plain and cage is FROM_SETUP) else setup.cage
     if setup.thermal is not None:
+        if steady is not None:
+            raise ValueError("steady: a setup with a thermal model solves its own seed state at each temperature "
+                             "(MODEL.md §14d); pass steady=None")
         return _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step,
                                  start)
     seed = seed_axial_load(axial_force, radial_force)
@@ -388,7 +399,8 @@ def _continue(make, y, start, end, largest, tol, steps_left, describe, reserve=0
     at = lambda t: start + t * (end - start)  # noqa: E731
     done, step, worst, balance = 0.0, min(1.0, largest / span), 0.0, None
     last = None  # (path parameter, state) of the step before, for the secant predictor
-    stalls = 0  # stalled attempts in a row (only at the end: the path's tolerance is far above a stall's)
+    stalls = 0  # stalled attempts in a row (at the default 1e-8 only the end can stall: a stall ends at
+    # most STALL_FACTOR x tol = the path's tolerance)
     while done < 1.0:
         if steps_left is not None:
             # the fewest steps the rest takes: a budget that cannot cover them is spent in vain

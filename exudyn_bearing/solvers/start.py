@@ -93,6 +93,8 @@ def steady_start(bearing, lubricant, initial_state, *, axial_force, radial_force
         why = "it needs a Driven, Free or OnBody inner race (no innerRaceDisplacement)"
     elif rpm_i == sense * rpm_o:
         why = "the races turn at the same speed"
+    elif radial_force != 0 and axial_force < 0:
+        why = "under radial load it needs an axial load >= 0"
     elif radial_force != 0 and sense < 0:
         why = "under radial load it needs a positive inner-race speed"
     if why is None:

@@ -129,7 +129,7 @@ def fixed_point(setup, solve) -> tuple:
         last_change = change
         temperatures = {k: temperatures[k] + relax * (new[k] - temperatures[k]) for k in NODES}
         if not all(math.isfinite(v) for v in temperatures.values()):
-            raise ValueError(f"steady_state: the thermal network diverged at iteration {iteration} "
+            raise ValueError(f"the thermal fixed point diverged at iteration {iteration} "
                              f"(temperatures {temperatures})")
     converged = history[-1] < TEMPERATURE_TOLERANCE_K
     failure = None if converged else (f"thermal fixed point not reached in {MAX_ITERATIONS} iterations "
