@@ -18,6 +18,7 @@ from ..setup import FROM_SETUP, BearingSetup
 from ..results.records import assumptions_line, assumptions_record
 from .options import COMMANDS, DefaultsFormatter, join_negative_values
 from .run_report import plot_temperatures_beside, print_simulation, print_thermal
+from .steady_report import print_steady
 
 
 def _setup(args, **changes) -> BearingSetup:
@@ -363,32 +364,7 @@ def _steady(args) -> int:
         json.dump(data, sys.stdout, indent=1)
         print()
         return 0 if state.converged else 1
-    print(f"Steady rolling state (MODEL.md §12): axial {args.axial:g} N, inner race {args.rpm:g} rpm"
-          f"{', no drag' if args.no_drag else ''}")
-    if not state.converged:
-        print(f"  NOT CONVERGED: {state.message}")
-    print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %   (the skid measure)")
-    print(f"  paper's P19 cage slip (nominal)     {state.cage_slip_percent:8.3f} %")
-    print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
-    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
-    print(f"  ball attitude xz / yz               {state.attitude_xz_deg:8.3f} / {state.attitude_yz_deg:.3f} deg")
-    print(f"  inner / outer load                  {state.inner_load:8.2f} / {state.outer_load:.2f} N")
-    print(f"  inner / outer contact angle         {state.inner_contact_angle_deg:8.2f} / "
-          f"{state.outer_contact_angle_deg:.2f} deg")
-    print(f"  minimum axial load: Hirano {data['hirano_minimum_axial']:.0f} N, Jones' gyroscopic criterion "
-          f"{data['gyroscopic_minimum_axial']:.0f} N")
-    loss = state.power_loss_W
-    print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
-          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
-          f"drive {state.drive_power_W:.1f} W")
-    if state.thermal is not None and "heat_W" in state.thermal:
-        th = state.thermal
-        print("  temperatures (MODEL.md §14), K      " + ", ".join(f"{k.replace('_', ' ')} {v:.1f}"
-                                                               for k, v in th["temperatures_K"].items()))
-        print(f"  contact oil, K                      inner {th['contact_oil_temperature_K']['inner']:.1f}, outer "
-              f"{th['contact_oil_temperature_K']['outer']:.1f} (inlet {th['oil_inlet_K']:.1f}); heat carried off "
-              f"by the oil {th['removed_W']['oil_inlet']:.1f} W, to ambient {th['removed_W']['ambient']:.1f} W")
-    print(f"  wall time {state.wall_time_s:.2f} s")
+    print_steady(state, data, args)
     return 0 if state.converged else 1
 
 
