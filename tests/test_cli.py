@@ -581,13 +581,23 @@ def test_loads_default_to_zero_and_a_radial_only_run_needs_no_axial(tmp_path):
     assert proc.returncode == 2 and "no load" in proc.stderr and "--axial" in proc.stderr, proc.stderr
 
 
-def test_steady_with_a_radial_load_says_what_it_solves_and_where_to_go(tmp_path):
+def test_steady_with_a_radial_load_solves_the_quasi_dynamic_state(tmp_path):
+    """``steady --radial`` solves every ball's own balance (MODEL.md §12a): at 1300 N axial +
+    1 N radial its skid measure and loads are the axial steady state's (a different solver,
+    one ball) and its drive power its losses; the JSON says what produced it."""
+    data, _ = cli_json("steady", "--axial", "1300", "--radial", "1", cwd=tmp_path)
+    axial, _ = cli_json("steady", "--axial", "1300", cwd=tmp_path)
+    assert data["converged"] and data["units"]["inner_load"] == "N" and "bearing" in data["inputs"]
+    assert data["kinematic_cage_slip_percent"] == pytest.approx(axial["kinematic_cage_slip_percent"], abs=0.01)
+    assert np.allclose(data["inner_load"], axial["inner_load"], rtol=2e-3)
+    assert data["drive_power_W"] == pytest.approx(data["power_loss_W"]["total"], rel=1e-4)
     proc, _ = cli("steady", "--axial", "300", "--radial", "200", cwd=tmp_path)
-    assert proc.returncode == 2 and "Traceback" not in proc.stderr
-    assert "pure axial" in proc.stderr and "simulate" in proc.stderr and "--start steady" in proc.stderr
-    assert "unrecognized" not in proc.stderr
+    assert proc.returncode == 0 and "Quasi-dynamic state under combined load" in proc.stdout, proc.stderr[-2000:]
+    assert "kinematic cage slip" in proc.stdout and "inner load" in proc.stdout
     proc, _ = cli("steady", cwd=tmp_path)
     assert proc.returncode == 2 and "--axial must be positive" in proc.stderr, proc.stderr
+    proc, _ = cli("steady", "--axial", "-300", "--radial", "200", cwd=tmp_path)
+    assert proc.returncode == 2 and "axial" in proc.stderr and "Traceback" not in proc.stderr
 
 
 @pytest.mark.parametrize("args", [["skid-map", "--axial", "-300,300", "--rpm", "900", "--out", "m"],

@@ -56,7 +56,7 @@ def test_the_combined_thermal_state_balances_heat_and_power():
         seed = steady_state(cold, axial_force=2200.0, rpm=1800.0)
         _, balance, x, _ = solve_combined(cold, cold.cage, 2200.0, 2000.0, 1800.0, 0.0, seed, 1e-8, None, None,
                                           0.0)
-        losses = azimuth_losses(balance, x, cold.cage.guidance)
+        losses = azimuth_losses(balance, x)
         assert azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
         assert (losses.get("land_outer", 0.0) > 1.0) == (land > 0)
     # each race's contacts and the land on their own oils (the thermal iterates' balances)
@@ -64,7 +64,7 @@ def test_the_combined_thermal_state_balances_heat_and_power():
     solved = solve_steady(HOT, 2200.0, 1800.0, 0.0, 1e-8, races=oils[:2], land_lubricant=oils[2])
     states, balance, x, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_result(solved, 0.0, {}),
                                            1e-8, None, None, 0.0, oils=oils)
-    losses = azimuth_losses(balance, x, HOT.cage.guidance)
+    losses = azimuth_losses(balance, x)
     assert states.converged and azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
     _, base, y, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_state(
         BearingSetup(REFERENCE_BEARING), axial_force=2200.0, rpm=1800.0), 1e-8, None, None, 0.0)

@@ -25,6 +25,8 @@ UNITS = {
     "outer_deflection": "m", "ball_radius_offset": "m", "ball_axial_offset": "m", "displacement": "m", "tilt": "rad",
     "reaction_moment": "N m", "centrifugal_force": "N", "cage_force": "N", "race_force": "N", "race_moment": "N m",
     "axial_displacement": "m", "radial_displacement": "m",
+    # the quasi-dynamic state (AzimuthStates.to_dict)
+    "orbit_radius": "m", "axial_position": "m", "omega": "rad/s", "pocket_force": "N", "cage_offset": "m",
 }
 
 #: unit suffixes of result names

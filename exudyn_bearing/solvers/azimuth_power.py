@@ -17,13 +17,14 @@ from contact.bearing_thermal import OperatingPoint, mean_contact
 __all__ = ["azimuth_losses", "azimuth_drive_power", "azimuth_operating_point"]
 
 
-def azimuth_losses(balance, x, guidance: str) -> dict:
+def azimuth_losses(balance, x) -> dict:
     """Losses of the whole bearing in the quasi-dynamic state ``x`` (scaled unknowns) of
     ``balance`` (:class:`~exudyn_bearing.solvers.azimuth_balance._Balance`), W, by place as
     :data:`contact.bearing_thermal.HEAT_SPLIT` names them: each race's contacts (traction and
-    spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b), ``ball_drag`` (§11c), the land of the
-    ``guidance`` ('inner' or 'outer') race (K Δω², §11d) and ``pockets`` (none: the balls
-    orbit with their pockets, which have no friction in this balance)."""
+    spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b), ``ball_drag`` (§11c), the guiding
+    race's land (K Δω², §11d; the race turning at the land's speed, as
+    :func:`~exudyn_bearing.solvers.steady_power.steady_losses` names it) and ``pockets``
+    (none: the balls orbit with their pockets, which have no friction in this balance)."""
     z = balance.z
     _, f = balance.contacts(x)
     state = balance._motion(x)
@@ -33,7 +34,8 @@ def azimuth_losses(balance, x, guidance: str) -> dict:
     out["ball_drag"] = float(np.sum(0.5 * balance.c_d * balance.density * np.pi * balance.b.ball_radius ** 2
                                     * speed ** 3))
     k_land, w_land = balance.land
-    out["land_inner" if guidance == "inner" else "land_outer"] = k_land * (w_land - state["w_c"]) ** 2
+    outer = w_land == balance.race_omega[z, 2]
+    out["land_outer" if outer else "land_inner"] = float(k_land * (w_land - state["w_c"]) ** 2)
     out["pockets"] = 0.0
     return out
 

@@ -26,11 +26,12 @@ from __future__ import annotations
 
 import math
 import time as _time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
 from contact.ballrace import ContactLaw
+from contact.kinematics import rolling_cage_speed
 from ..bearing import Bearing
 from ..bearingfile import as_setup
 from ..cage import CageModel
@@ -39,7 +40,10 @@ from ..setup import FROM_SETUP, refuse_surface
 from .newton import damped_newton
 from .quasistatic import solve_load_distribution
 from .azimuth_balance import _Balance
-from .azimuth_power import azimuth_losses, azimuth_operating_point
+from ..results.outputs import cage_slip
+from ..results.records import units_of
+from .azimuth_power import azimuth_drive_power, azimuth_losses, azimuth_operating_point
+from .steady_power import by_source
 from .steady import steady_state
 from .steady_balance import solve_steady, steady_result
 from .thermal import FixedPointPass, fixed_point
@@ -71,6 +75,37 @@ class AzimuthStates:
     #: with the setup's thermal network: its temperatures and heat, as :attr:`SteadyState.thermal`
     #: (MODEL.md §14d); else None
     thermal: dict | None = None
+    #: each ball's inner and outer contact load (Z,), N, and contact angle (Z,), rad (None where
+    #: no balance was found)
+    inner_load: np.ndarray | None = None
+    outer_load: np.ndarray | None = None
+    inner_contact_angle: np.ndarray | None = None
+    outer_contact_angle: np.ndarray | None = None
+    nominal_cage_speed: float | None = None  #: rad/s, the pure-rolling cage speed of the nominal geometry
+    cage_slip_percent: float | None = None  #: the paper's P19 cage slip against it, %
+    #: the mean over the balls of the cage slip against each ball's own pure-rolling orbital
+    #: speed (MODEL.md §7, the dynamic results' skid measure), %
+    kinematic_cage_slip_percent: float | None = None
+    #: losses by source (traction, rolling_resistance, ball_drag, cage, total), W, and the power
+    #: the races' drives put in, W (equal in this steady state; :mod:`.azimuth_power`)
+    power_loss_W: dict | None = None
+    drive_power_W: float | None = None
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the fields (arrays as lists) and ``units`` (the unit of every key)."""
+        data = {f.name: _plain(getattr(self, f.name)) for f in fields(self)}
+        return data | {"units": units_of(data)}
+
+
+def _plain(value):
+    """``value`` with its arrays and numpy numbers as lists and floats (JSON)."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, (tuple, list)):
+        return [_plain(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    return float(value) if isinstance(value, np.floating) else value
 
 
 def failed_states(z: int, message: str, start: float, displacement=(np.nan,) * 3, tilt=(0.0, 0.0)) -> AzimuthStates:
@@ -199,7 +234,6 @@ def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, to
     state at its temperatures and oils; each later one is Newton's from the iterate before
     (the continuation again where that fails). The result's ``thermal`` as the steady state's."""
     seed = seed_axial_load(axial_force, radial_force)
-    guidance = setup.cage.guidance
     last = {}  # the centred unknowns of the last iterate's balance
 
     def solve(running, oils):
@@ -217,7 +251,7 @@ def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, to
         states, balance, x, last["centred"] = found
         if not states.converged:
             return FixedPointPass(states, states.message, None, None)
-        return FixedPointPass(states, None, azimuth_losses(balance, x, guidance), azimuth_operating_point(balance, x))
+        return FixedPointPass(states, None, azimuth_losses(balance, x), azimuth_operating_point(balance, x))
 
     states, failure, record = fixed_point(setup, solve)
     if states is None:  # no balance at any iterate
@@ -228,11 +262,26 @@ def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, to
 
 
 def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> AzimuthStates:
-    """The :class:`AzimuthStates` of the unscaled unknowns ``y`` of ``balance``."""
-    pocket, w_b, c, w_c, d = balance.unpack(y / balance.scale)
+    """The :class:`AzimuthStates` of the unscaled unknowns ``y`` of ``balance``, with its
+    contacts' loads and angles, its losses and drive power."""
+    x = y / balance.scale
+    pocket, w_b, c, w_c, d = balance.unpack(x)
+    kin, f = balance.contacts(x)
+    z = balance.z
+    w_i, w_o = float(balance.race_omega[0, 2]), float(balance.race_omega[z, 2])
+    nominal = float(balance.b.cage_speed(w_i, w_o))
+    # each ball's pure-rolling orbit for its geometry and spin axis (MODEL.md §7), the races'
+    # surface speeds at its contacts as the ball's surface speed there less the slip
+    v = balance._motion(x)["v"][:z]
+    surface = [np.einsum("ij,ij->i", v + np.cross(w_b, kin.point[part] - c), kin.rolling[part])
+               + kin.slip_rolling[part] for part in (slice(0, z), slice(z, 2 * z))]
+    w_kin = rolling_cage_speed(c, w_b, kin.point[:z], kin.point[z:], w_i, w_o, surface_speeds=surface)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
                          d.copy(), worst, converged, message, _time.perf_counter() - start, tilt,
-                         tuple(balance.cage_offset))
+                         tuple(float(v) for v in balance.cage_offset), None, f.normal_load[:z].copy(),
+                         f.normal_load[z:].copy(), kin.contact_angle[:z].copy(), kin.contact_angle[z:].copy(), nominal,
+                         float(cage_slip(nominal, w_c)), float(np.mean(cage_slip(w_kin, w_c))),
+                         by_source(azimuth_losses(balance, x)), azimuth_drive_power(balance, x))
 
 
 def _balance_inputs(bearing, lubricant, contact_law, cage, rpm, outer_rpm):

@@ -18,7 +18,7 @@ from ..setup import FROM_SETUP, BearingSetup
 from ..results.records import assumptions_line, assumptions_record
 from .options import COMMANDS, DefaultsFormatter, join_negative_values
 from .run_report import plot_temperatures_beside, print_simulation, print_thermal
-from .steady_report import print_steady
+from .steady_report import print_combined, print_steady
 
 
 def _setup(args, **changes) -> BearingSetup:
@@ -343,9 +343,7 @@ def _steady(args) -> int:
     from ..solvers.steady import steady_state
 
     if args.radial != 0:
-        raise ValueError(f"--radial {args.radial:g}: steady solves the pure axial load (MODEL.md §12); for a combined "
-                         f"load run 'simulate --axial A --radial {args.radial:g} --start steady', which starts from "
-                         "every ball's own balance (MODEL.md §12a)")
+        return _combined(args)
     if not args.axial > 0:
         raise ValueError(f"--axial must be positive for the steady state (got {args.axial:g} N): give the axial "
                          "load, N")
@@ -365,6 +363,27 @@ def _steady(args) -> int:
         print()
         return 0 if state.converged else 1
     print_steady(state, data, args)
+    return 0 if state.converged else 1
+
+
+def _combined(args) -> int:
+    """``steady --radial R``: the quasi-dynamic state under the combined load (MODEL.md §12a)."""
+    from ..results.records import setup_inputs, units_of
+    from ..solvers.quasidynamic import combined_load_state
+
+    if args.axial < 0:
+        raise ValueError(f"--axial must be >= 0 under radial load (got {args.axial:g} N): give the axial load, N")
+    setup = _thermal(args, _setup(args))
+    state = combined_load_state(setup, axial_force=args.axial, radial_force=args.radial, rpm=args.rpm)
+    data = state.to_dict()
+    data["assumptions"] = assumptions_record(setup.drag, setup.contact_law, setup.lubricant)
+    data["units"].update(units_of({"assumptions": data["assumptions"]}))
+    data["inputs"] = setup_inputs(setup)
+    if args.json:
+        json.dump(data, sys.stdout, indent=1)
+        print()
+    else:
+        print_combined(state, data, args)
     return 0 if state.converged else 1
 
 

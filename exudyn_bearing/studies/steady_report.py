@@ -3,9 +3,13 @@ and the quasi-dynamic state under combined load (§12a), with their temperatures
 bearing has a thermal network (§14d)."""
 from __future__ import annotations
 
+import math
+
+import numpy as np
+
 from ..results.records import assumptions_line
 
-__all__ = ["print_steady"]
+__all__ = ["print_steady", "print_combined"]
 
 
 def print_steady(state, data: dict, args) -> None:
@@ -31,10 +35,45 @@ def print_steady(state, data: dict, args) -> None:
           f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
           f"drive {state.drive_power_W:.1f} W")
     if state.thermal is not None and "heat_W" in state.thermal:
-        th = state.thermal
-        print("  temperatures (MODEL.md §14), K      " + ", ".join(f"{k.replace('_', ' ')} {v:.1f}"
-                                                               for k, v in th["temperatures_K"].items()))
-        print(f"  contact oil, K                      inner {th['contact_oil_temperature_K']['inner']:.1f}, outer "
-              f"{th['contact_oil_temperature_K']['outer']:.1f} (inlet {th['oil_inlet_K']:.1f}); heat carried off "
-              f"by the oil {th['removed_W']['oil_inlet']:.1f} W, to ambient {th['removed_W']['ambient']:.1f} W")
+        _print_temperatures(state.thermal)
     print(f"  wall time {state.wall_time_s:.2f} s")
+
+
+def print_combined(state, data: dict, args) -> None:
+    """The text report of a :class:`~exudyn_bearing.solvers.quasidynamic.AzimuthStates`
+    ``state`` (every ball in its own balance at its azimuth, MODEL.md §12a), its JSON
+    dictionary ``data`` and the command line ``args``."""
+    print(f"Quasi-dynamic state under combined load (MODEL.md §12a): axial {args.axial:g} N, radial "
+          f"{args.radial:g} N, inner race {args.rpm:g} rpm{', no drag' if args.no_drag else ''}")
+    if not state.converged:
+        print(f"  NOT CONVERGED: {state.message}")
+        return
+    print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %   (the skid measure, "
+          "mean over the balls)")
+    print(f"  paper's P19 cage slip (nominal)     {state.cage_slip_percent:8.3f} %")
+    print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
+    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
+    d = 1e6 * np.asarray(state.displacement)
+    print(f"  inner race displacement             ({d[0]:.2f}, {d[1]:.2f}, {d[2]:.2f}) um")
+    for race in ("inner", "outer"):
+        load = getattr(state, f"{race}_load")
+        angle = np.degrees(getattr(state, f"{race}_contact_angle"))
+        k = int(np.argmax(load))
+        print(f"  {race} load                          {load[k]:8.1f} N at {math.degrees(state.azimuth[k]):.0f} deg "
+              f"(least {np.min(load):.1f} N); contact angle {np.min(angle):.2f}-{np.max(angle):.2f} deg")
+    loss = state.power_loss_W
+    print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
+          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
+          f"drive {state.drive_power_W:.1f} W")
+    if state.thermal is not None and "heat_W" in state.thermal:
+        _print_temperatures(state.thermal)
+    print(f"  wall time {state.wall_time_s:.2f} s")
+
+
+def _print_temperatures(th: dict) -> None:
+    """The node and contact-oil temperatures of a steady state's ``thermal`` record (§14d)."""
+    print("  temperatures (MODEL.md §14), K      " + ", ".join(f"{k.replace('_', ' ')} {v:.1f}"
+                                                           for k, v in th["temperatures_K"].items()))
+    print(f"  contact oil, K                      inner {th['contact_oil_temperature_K']['inner']:.1f}, outer "
+          f"{th['contact_oil_temperature_K']['outer']:.1f} (inlet {th['oil_inlet_K']:.1f}); heat carried off "
+          f"by the oil {th['removed_W']['oil_inlet']:.1f} W, to ambient {th['removed_W']['ambient']:.1f} W")
