@@ -153,7 +153,7 @@ def test_the_continuation_passes_where_newton_stalls_short_of_its_tolerance(monk
     the end is a balance to 1e-8 and its cage turns at the kinematic speed of a rolling
     deep-groove bearing, w_i (1 - D/d_m) / 2, within 0.2 %. With every point solved to 1e-8
     the same continuation stops."""
-    from exudyn_bearing.solvers import quasidynamic
+    from exudyn_bearing.solvers import continuation
 
     kw = dict(axial_force=0.0, radial_force=300.0, max_steps=40, max_step=75.0)
     state, balances, bearing = _counted_states(monkeypatch, **kw)
@@ -163,7 +163,7 @@ def test_the_continuation_passes_where_newton_stalls_short_of_its_tolerance(monk
     assert state.cage_speed == pytest.approx(0.5 * w_i * (1 - bearing.ball_diameter / bearing.pitch_diameter),
                                              rel=2e-3)
     assert balances <= 25
-    monkeypatch.setattr(quasidynamic, "PATH_TOLERANCE", 0.0)
+    monkeypatch.setattr(continuation, "PATH_TOLERANCE", 0.0)
     strict, _, _ = _counted_states(monkeypatch, **kw)
     assert not strict.converged and "30 N axial" in strict.message, strict.message
 
@@ -205,7 +205,7 @@ def test_the_continuation_stops_at_a_true_fold():
     fold: x^2 = 1 - t from t = 0 to 2 stops within 1e-3 of t = 1 on its branch, with or
     without a budget, and a path that ends before the fold ends on the closed-form root
     sqrt(1 - t) to the end's tolerance."""
-    from exudyn_bearing.solvers.quasidynamic import _continue
+    from exudyn_bearing.solvers.continuation import continue_path as _continue
 
     text = lambda p: f"t = {p[0]:.6g}"  # noqa: E731
     for budget in (None, 400):
