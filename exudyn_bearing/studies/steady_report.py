@@ -30,13 +30,7 @@ def print_steady(state, data: dict, args) -> None:
           f"{state.outer_contact_angle_deg:.2f} deg")
     print(f"  minimum axial load: Hirano {data['hirano_minimum_axial']:.0f} N, Jones' gyroscopic criterion "
           f"{data['gyroscopic_minimum_axial']:.0f} N")
-    loss = state.power_loss_W
-    print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
-          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
-          f"drive {state.drive_power_W:.1f} W")
-    if state.thermal is not None and "heat_W" in state.thermal:
-        _print_temperatures(state.thermal)
-    print(f"  wall time {state.wall_time_s:.2f} s")
+    _print_heat(state)
 
 
 def print_combined(state, data: dict, args) -> None:
@@ -61,6 +55,12 @@ def print_combined(state, data: dict, args) -> None:
         k = int(np.argmax(load))
         print(f"  {race} load                          {load[k]:8.1f} N at {math.degrees(state.azimuth[k]):.0f} deg "
               f"(least {np.min(load):.1f} N); contact angle {np.min(angle):.2f}-{np.max(angle):.2f} deg")
+    _print_heat(state)
+
+
+def _print_heat(state) -> None:
+    """The losses and drive power of a steady or quasi-dynamic ``state``, its temperatures
+    where it has them, and its wall time."""
     loss = state.power_loss_W
     print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
           f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
