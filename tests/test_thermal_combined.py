@@ -161,3 +161,24 @@ def test_later_iterates_start_from_the_last_balance(monkeypatch):
     for node in NODES:
         assert warm.thermal["temperatures_K"][node] == pytest.approx(cold.thermal["temperatures_K"][node], abs=0.01)
     assert warm.cage_speed == pytest.approx(cold.cage_speed, rel=1e-6)
+
+
+@pytest.mark.parametrize("radial", [0.0, 2000.0])
+def test_a_bearing_with_a_defect_starts_from_its_perfect_twins_thermal_state(radial):
+    """A defect has no steady state: 'auto' starts a bearing with one from the thermal steady
+    state of the same bearing without it (axial and combined load; until session 41 the
+    build stopped at the steady solver's refusal of the surface)."""
+    from contact.surface import Defect, SurfaceModel
+    from exudyn_bearing import races
+
+    spalled = HOT.replace(surface=SurfaceModel((Defect("outer", 0.0, 1e-3, 5e-6),)))
+    mbs = exu.SystemContainer().AddSystem()
+    h = mbs.CreateAngularContactBearing(spalled, innerRace=races.Driven(1800.0), axialForce=2200.0,
+                                        radialForce=radial, show=False)
+    perfect = (steady_state(HOT, axial_force=2200.0, rpm=1800.0) if radial == 0 else
+               combined_load_state(HOT, axial_force=2200.0, radial_force=radial, rpm=1800.0))
+    assert h.temperatures.start.kind == "steady"
+    for node in NODES:
+        assert h.temperatures.start_temperatures[node] == pytest.approx(perfect.thermal["temperatures_K"][node],
+                                                                        abs=1e-9)
+    assert h.connector.surface is not None and h.connector.surface.defects

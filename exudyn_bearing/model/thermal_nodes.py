@@ -22,6 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from contact.surface import SurfaceModel
 from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, mean_contact, place_heat
 from ..errors import ThermalGrowthWarning
 from ..races import node_rows
@@ -295,7 +296,8 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
     turning forwards): under a pure axial load :func:`~exudyn_bearing.steady_state`'s,
     under combined or radial load :func:`~exudyn_bearing.solvers.quasidynamic.combined_load_state`'s
     (continued as the builder's start, :func:`~exudyn_bearing.solvers.start.steady_start`),
-    whose mechanical state the run then starts from; 'auto' (default) 'steady' where it
+    whose mechanical state the run then starts from (that of the bearing without its
+    defects and waviness, which have no steady state); 'auto' (default) 'steady' where it
     applies and converges, else 'inlet'."""
     from ..solvers.quasidynamic import combined_load_state
     from ..solvers.start import continuation_budget, continuation_step
@@ -317,10 +319,12 @@ def thermal_start(setup, initial_temperatures, *, axial, radial, constant_load, 
         why = "initialState='rolling' asks for the pure-rolling start"
     steady = None
     if why is None and initial_temperatures != "inlet":
+        # the perfect bearing's: a surface has no steady state, and its own heat comes with the run
+        perfect = setup.replace(surface=SurfaceModel())
         if radial == 0:
-            steady = steady_state(setup, axial_force=axial, rpm=rpm_i, outer_rpm=rpm_o)
+            steady = steady_state(perfect, axial_force=axial, rpm=rpm_i, outer_rpm=rpm_o)
         else:
-            steady = combined_load_state(setup, axial_force=axial, radial_force=radial, rpm=rpm_i,
+            steady = combined_load_state(perfect, axial_force=axial, radial_force=radial, rpm=rpm_i,
                                          outer_rpm=rpm_o, max_steps=continuation_budget(initial_state),
                                          max_step=lambda seed: continuation_step(seed, axial, radial))
         if not steady.converged:
