@@ -41,6 +41,8 @@ def print_combined(state, data: dict, args) -> None:
           f"{args.radial:g} N, inner race {args.rpm:g} rpm{', no drag' if args.no_drag else ''}")
     if not state.converged:
         print(f"  NOT CONVERGED: {state.message}")
+        print(f"  (no balance to report; the dynamic model settles wherever it can: simulate --axial {args.axial:g} "
+              f"--radial {args.radial:g})")
         return
     print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %   (the skid measure, "
           "mean over the balls)")
