@@ -272,7 +272,7 @@ def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> Az
     w_kin = rolling_cage_speed(c, w_b, kin.point[:z], kin.point[z:], w_i, w_o, surface_speeds=surface)
     return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
                          d.copy(), worst, converged, message, _time.perf_counter() - start, tilt,
-                         tuple(float(v) for v in balance.cage_offset), None, f.normal_load[:z].copy(),
+                         tuple(float(e) for e in balance.cage_offset), None, f.normal_load[:z].copy(),
                          f.normal_load[z:].copy(), kin.contact_angle[:z].copy(), kin.contact_angle[z:].copy(), nominal,
                          float(cage_slip(nominal, w_c)), float(np.mean(cage_slip(w_kin, w_c))),
                          by_source(azimuth_losses(balance, x)), azimuth_drive_power(balance, x))
