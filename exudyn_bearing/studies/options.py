@@ -106,10 +106,10 @@ def _simulate_options(p) -> None:
 
 def _steady_options(p) -> None:
     """The options of ``steady``."""
-    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP + "; > 0 here")
+    p.add_argument("--axial", type=float, default=0.0, help=AXIAL_HELP + "; > 0 here without radial load")
     p.add_argument("--radial", type=float, default=0.0,
-                   help="must be 0: steady solves pure axial load; for a combined load use "
-                        "'simulate --radial R --start steady' (every ball's own balance, MODEL.md §12a)")
+                   help=RADIAL_HELP + "; not 0: every ball's own balance under the combined load, the "
+                        "quasi-dynamic state (MODEL.md §12a)")
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
