@@ -22,8 +22,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from contact.surface import SurfaceModel
 from contact.bearing_thermal import NODES, OperatingPoint, bearing_network, inlet_temperature, mean_contact, place_heat
+from contact.surface import SurfaceModel
 from ..errors import ThermalGrowthWarning
 from ..races import node_rows
 from ..solvers.thermal import contact_oils, heated
