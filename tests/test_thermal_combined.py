@@ -111,8 +111,9 @@ def test_the_cli_and_a_plain_scene_take_the_combined_thermal_start(tmp_path):
     Exudyn scene solved by SolveDynamic."""
     path = tmp_path / "hot.toml"
     save_bearing(BearingFile(REFERENCE_BEARING, thermal=ThermalModel()), path)
-    proc = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--bearing", str(path), "--axial", "2200",
-                           "--radial", "2000", "--time", "0.002", "--json"], capture_output=True, text=True, timeout=300)
+    proc = subprocess.run([sys.executable, "-m", "exudyn_bearing", "simulate", "--bearing", str(path), "--axial",
+                           "2200", "--radial", "2000", "--time", "0.002", "--json"], capture_output=True, text=True,
+                          timeout=300)
     assert proc.returncode == 0, proc.stderr[-2000:]
     out = json.loads(proc.stdout)
     assert out["thermal"]["start"] == "steady"

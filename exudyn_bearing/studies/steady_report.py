@@ -23,7 +23,8 @@ def print_steady(state, data: dict, args) -> None:
     print(f"  kinematic cage slip (MODEL.md §7)   {state.kinematic_cage_slip_percent:8.3f} %   (the skid measure)")
     print(f"  paper's P19 cage slip (nominal)     {state.cage_slip_percent:8.3f} %")
     print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
-    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
+    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s "
+          f"(nominal {state.nominal_cage_speed:.3f})")
     print(f"  ball attitude xz / yz               {state.attitude_xz_deg:8.3f} / {state.attitude_yz_deg:.3f} deg")
     print(f"  inner / outer load                  {state.inner_load:8.2f} / {state.outer_load:.2f} N")
     print(f"  inner / outer contact angle         {state.inner_contact_angle_deg:8.2f} / "
@@ -48,7 +49,8 @@ def print_combined(state, data: dict, args) -> None:
           "mean over the balls)")
     print(f"  paper's P19 cage slip (nominal)     {state.cage_slip_percent:8.3f} %")
     print(f"  assumptions                         {assumptions_line(data['assumptions'])}")
-    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s (nominal {state.nominal_cage_speed:.3f})")
+    print(f"  cage speed                          {state.cage_speed:8.3f} rad/s "
+          f"(nominal {state.nominal_cage_speed:.3f})")
     d = 1e6 * np.asarray(state.displacement)
     print(f"  inner race displacement             ({d[0]:.2f}, {d[1]:.2f}, {d[2]:.2f}) um")
     for race in ("inner", "outer"):
