@@ -257,9 +257,13 @@ def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, to
 
 def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> AzimuthStates:
     """The :class:`AzimuthStates` of the unscaled unknowns ``y`` of ``balance``, with its
-    contacts' loads and angles, its losses and drive power."""
+    contacts' loads and angles, its losses and drive power (not where ``y`` is not finite)."""
     x = y / balance.scale
     pocket, w_b, c, w_c, d = balance.unpack(x)
+    if not np.all(np.isfinite(x)):
+        return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(),
+                             pocket.copy(), d.copy(), worst, False, message, _time.perf_counter() - start, tilt,
+                             tuple(float(e) for e in balance.cage_offset))
     kin, f = balance.contacts(x)
     z = balance.z
     w_i, w_o = float(balance.race_omega[0, 2]), float(balance.race_omega[z, 2])
