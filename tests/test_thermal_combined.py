@@ -21,6 +21,8 @@ from exudyn_bearing.solvers.steady_balance import solve_steady, steady_result  #
 
 HOT = BearingSetup(REFERENCE_BEARING).replace(thermal=ThermalModel())
 T_IN = inlet_temperature(HOT.thermal, HOT.lubricant)  # K
+#: solve_combined's load, speeds and tolerance for 2.2 kN + 2 kN at 1800 rpm
+LOADED = dict(axial_force=2200.0, radial_force=2000.0, rpm=1800.0, outer_rpm=0.0, tol=1e-8, start=0.0)
 
 
 def test_a_vanishing_radial_load_is_the_axial_thermal_steady_state():
@@ -54,20 +56,18 @@ def test_the_combined_thermal_state_balances_heat_and_power():
     for land in (0.0, 4e-3):
         cold = BearingSetup(REFERENCE_BEARING).replace(cage=HOT.cage.__class__(land_width=land))
         seed = steady_state(cold, axial_force=2200.0, rpm=1800.0)
-        _, balance, x, _ = solve_combined(cold, cold.cage, 2200.0, 2000.0, 1800.0, 0.0, seed, 1e-8, None, None,
-                                          0.0)
+        _, balance, x, _ = solve_combined(cold, cold.cage, steady=seed, **LOADED)
         losses = azimuth_losses(balance, x)
         assert azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
         assert (losses.get("land_outer", 0.0) > 1.0) == (land > 0)
     # each race's contacts and the land on their own oils (the thermal iterates' balances)
     oils = tuple(HOT.lubricant.at_temperature(c) for c in (70.0, 45.0, 55.0))
     solved = solve_steady(HOT, 2200.0, 1800.0, 0.0, 1e-8, races=oils[:2], land_lubricant=oils[2])
-    states, balance, x, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_result(solved, 0.0, {}),
-                                           1e-8, None, None, 0.0, oils=oils)
+    states, balance, x, _ = solve_combined(HOT, HOT.cage, steady=steady_result(solved, 0.0, {}), oils=oils, **LOADED)
     losses = azimuth_losses(balance, x)
     assert states.converged and azimuth_drive_power(balance, x) == pytest.approx(sum(losses.values()), rel=1e-4)
-    _, base, y, _ = solve_combined(HOT, HOT.cage, 2200.0, 2000.0, 1800.0, 0.0, steady_state(
-        BearingSetup(REFERENCE_BEARING), axial_force=2200.0, rpm=1800.0), 1e-8, None, None, 0.0)
+    isothermal = steady_state(BearingSetup(REFERENCE_BEARING), axial_force=2200.0, rpm=1800.0)
+    _, base, y, _ = solve_combined(HOT, HOT.cage, steady=isothermal, **LOADED)
     # the films thin as each race's oil: (eta / eta_30C)^0.67 (Hamrock-Dowson) within 10 %
     film, film_30 = (b.contacts(v)[1].film_thickness for b, v in ((balance, x), (base, y)))
     z = REFERENCE_BEARING.balls

@@ -45,7 +45,7 @@ from ..results.outputs import cage_slip
 from ..results.records import units_of
 from .azimuth_power import azimuth_drive_power, azimuth_losses, azimuth_operating_point
 from .steady_power import by_source
-from .steady import steady_state
+from .steady import check_finite, steady_state
 from .steady_balance import solve_steady, steady_result
 from .thermal import FixedPointPass, fixed_point
 
@@ -158,10 +158,7 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                      cage=CageModel() if cage is None else cage)
     refuse_surface(setup, "combined_load_state", "simulate or vibration")
-    for name, value in (("axial_force", axial_force), ("radial_force", radial_force), ("rpm", rpm),
-                        ("outer_rpm", outer_rpm)):
-        if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
-            raise ValueError(f"{name} must be a finite number, got {value!r}")
+    check_finite(axial_force=axial_force, radial_force=radial_force, rpm=rpm, outer_rpm=outer_rpm)
     if axial_force < 0:
         raise ValueError(f"axial_force must be >= 0 (the balance's races are pressed one way), got {axial_force!r}")
     if rpm == outer_rpm:
@@ -171,18 +168,18 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
         if steady is not None:
             raise ValueError("steady: a setup with a thermal model solves its own seed state at each temperature "
                              "(MODEL.md §14d); pass steady=None")
-        return _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step,
-                                 start)
+        return _thermal_combined(setup, cage, axial_force=axial_force, radial_force=radial_force, rpm=rpm,
+                                 outer_rpm=outer_rpm, tol=tol, max_steps=max_steps, max_step=max_step, start=start)
     seed = seed_axial_load(axial_force, radial_force)
     if steady is None:
         steady = steady_state(setup.bearing, setup.lubricant, axial_force=seed, rpm=rpm, outer_rpm=outer_rpm,
                               ball_drag=setup.drag, contact_law=setup.contact_law, cage=cage)
-    return solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, steady, tol, max_steps, max_step,
-                          start)[0]
+    return solve_combined(setup, cage, axial_force=axial_force, radial_force=radial_force, rpm=rpm, outer_rpm=outer_rpm,
+                          steady=steady, tol=tol, start=start, max_steps=max_steps, max_step=max_step)[0]
 
 
-def solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, steady, tol, max_steps, max_step, start,
-                   oils=None, warm=None) -> tuple:
+def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, steady, tol, start, max_steps=None,
+                   max_step=None, oils=None, warm=None) -> tuple:
     """(:class:`AzimuthStates`, the last balance, its scaled unknowns, the unscaled unknowns of
     its centred cage) of :func:`combined_load_state` (checked inputs; ``cage`` None: no cage)
     from the seed's axial ``steady`` state; ``oils`` (inner contacts', outer contacts', land's
@@ -221,7 +218,7 @@ def solve_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, stead
     return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale, centred
 
 
-def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step, start):
+def _thermal_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step, start):
     """:func:`combined_load_state` of a ``setup`` with a ``thermal`` model: the balance and the
     network iterated to a fixed point (:func:`~exudyn_bearing.solvers.thermal.fixed_point`,
     MODEL.md §14d). The first iterate's balance is continued from the seed's axial steady
@@ -231,17 +228,18 @@ def _thermal_combined(setup, cage, axial_force, radial_force, rpm, outer_rpm, to
     last = {}  # the centred unknowns of the last iterate's balance
 
     def solve(running, oils):
-        args = (running, cage, axial_force, radial_force, rpm, outer_rpm)
+        kw = dict(axial_force=axial_force, radial_force=radial_force, rpm=rpm, outer_rpm=outer_rpm, tol=tol,
+                  start=start, max_steps=max_steps, max_step=max_step, oils=oils)
         found = None
         if "centred" in last:
-            found = solve_combined(*args, None, tol, max_steps, max_step, start, oils=oils, warm=last["centred"])
+            found = solve_combined(running, cage, steady=None, warm=last["centred"], **kw)
         if found is None or not found[0].converged:
             inner, outer, land = oils
             solved = solve_steady(running.replace(cage=CageModel() if cage is None else cage), seed, rpm, outer_rpm,
                                   tol, races=(inner, outer), land_lubricant=land)
             if not solved.converged:
                 return FixedPointPass(None, f"the axial steady state at {seed:g} N: {solved.message}", None, None)
-            found = solve_combined(*args, steady_result(solved, 0.0, {}), tol, max_steps, max_step, start, oils=oils)
+            found = solve_combined(running, cage, steady=steady_result(solved, 0.0, {}), **kw)
         states, balance, x, last["centred"] = found
         if not states.converged:
             return FixedPointPass(states, states.message, None, None)
@@ -260,10 +258,11 @@ def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> Az
     contacts' loads and angles, its losses and drive power (not where ``y`` is not finite)."""
     x = y / balance.scale
     pocket, w_b, c, w_c, d = balance.unpack(x)
+    states = AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(),
+                           pocket.copy(), d.copy(), worst, converged, message, 0.0, tilt,
+                           tuple(float(e) for e in balance.cage_offset))
     if not np.all(np.isfinite(x)):
-        return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(),
-                             pocket.copy(), d.copy(), worst, False, message, _time.perf_counter() - start, tilt,
-                             tuple(float(e) for e in balance.cage_offset))
+        return replace(states, converged=False, wall_time_s=_time.perf_counter() - start)
     kin, f = balance.contacts(x)
     z = balance.z
     w_i, w_o = float(balance.race_omega[0, 2]), float(balance.race_omega[z, 2])
@@ -274,12 +273,12 @@ def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> Az
     surface = [np.einsum("ij,ij->i", v + np.cross(w_b, kin.point[part] - c), kin.rolling[part])
                + kin.slip_rolling[part] for part in (slice(0, z), slice(z, 2 * z))]
     w_kin = rolling_cage_speed(c, w_b, kin.point[:z], kin.point[z:], w_i, w_o, surface_speeds=surface)
-    return AzimuthStates(float(w_c), balance.psi.copy(), c[:, 0].copy(), c[:, 2].copy(), w_b.copy(), pocket.copy(),
-                         d.copy(), worst, converged, message, _time.perf_counter() - start, tilt,
-                         tuple(float(e) for e in balance.cage_offset), None, f.normal_load[:z].copy(),
-                         f.normal_load[z:].copy(), kin.contact_angle[:z].copy(), kin.contact_angle[z:].copy(), nominal,
-                         float(cage_slip(nominal, w_c)), float(np.mean(cage_slip(w_kin, w_c))),
-                         by_source(azimuth_losses(balance, x)), azimuth_drive_power(balance, x))
+    return replace(states, inner_load=f.normal_load[:z].copy(), outer_load=f.normal_load[z:].copy(),
+                   inner_contact_angle=kin.contact_angle[:z].copy(), outer_contact_angle=kin.contact_angle[z:].copy(),
+                   nominal_cage_speed=nominal, cage_slip_percent=float(cage_slip(nominal, w_c)),
+                   kinematic_cage_slip_percent=float(np.mean(cage_slip(w_kin, w_c))),
+                   power_loss_W=by_source(azimuth_losses(balance, x)), drive_power_W=azimuth_drive_power(balance, x),
+                   wall_time_s=_time.perf_counter() - start)
 
 
 def _balance_inputs(bearing, lubricant, contact_law, cage, rpm, outer_rpm):

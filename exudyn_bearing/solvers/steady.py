@@ -23,7 +23,15 @@ from ..setup import FROM_SETUP, BearingSetup, refuse_surface
 from .steady_balance import SteadyState, solve_steady, steady_result
 from .thermal import thermal_steady_state
 
-__all__ = ["SteadyState", "steady_state"]
+__all__ = ["SteadyState", "steady_state", "check_finite"]
+
+
+def check_finite(**values) -> None:
+    """A ValueError naming the first of the loads (N) and speeds (rev/min) ``values`` that is
+    not a finite number (the steady and quasi-dynamic solvers' inputs)."""
+    for name, value in values.items():
+        if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
+            raise ValueError(f"{name} must be a finite number, got {value!r}")
 
 
 @accepts_old_names
@@ -75,9 +83,7 @@ def steady_state(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubr
     setup = as_setup(bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                      cage=CageModel() if cage is None else cage, thermal=thermal)
     refuse_surface(setup, "steady_state", "simulate or vibration")
-    for name, value in (("axial_force", axial_force), ("rpm", rpm), ("outer_rpm", outer_rpm)):
-        if not isinstance(value, (int, float, np.floating)) or not math.isfinite(value):
-            raise ValueError(f"{name} must be a finite number, got {value!r}")
+    check_finite(axial_force=axial_force, rpm=rpm, outer_rpm=outer_rpm)
     if axial_force <= 0:
         raise ValueError("axial_force must be positive (the steady state is for an axially loaded bearing), "
                          f"got {axial_force!r}")
