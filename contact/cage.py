@@ -11,7 +11,8 @@ import numpy as np
 
 from .kinematics import cross
 
-__all__ = ["pocket_forces", "pocket_friction", "spring_chain_forces", "radial_offset", "land_forces", "drag_forces"]
+__all__ = ["pocket_forces", "pocket_friction", "spring_chain_forces", "radial_offset", "land_forces", "drag_forces",
+           "jet_momentum_factor"]
 
 
 def pocket_forces(ball_centre, ball_velocity, cage_origin, cage_rotation, cage_velocity, cage_omega,
@@ -199,11 +200,22 @@ def land_friction_torque(constant, slip_speed, eccentricity_ratio, max_ratio=0.9
     return constant * np.asarray(slip_speed, dtype=float) / np.sqrt(1.0 - eps ** 2)
 
 
-def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius):
-    """Sphere drag against each ball's orbital motion through still oil (MODEL.md §8), (n, 3), N:
-    F_D = 1/2 C_D rho pi r² v², v the circumferential ball-centre speed about ``axis``."""
+def drag_forces(ball_centre, ball_velocity, axis, origin, drag_coefficient, density, ball_radius, linear=0.0):
+    """Drag against each ball's orbital motion (MODEL.md §8, §11c), (n, 3), N: the sphere's
+    F_D = 1/2 C_D rho pi r² v² through still oil plus, with ``linear`` k (kg/s, from
+    :func:`jet_momentum_factor`), the jet oil's momentum k v; v the circumferential
+    ball-centre speed about ``axis``."""
     rel = np.asarray(ball_centre, dtype=float) - origin
     e_psi = cross(axis, rel)
     e_psi /= np.linalg.norm(e_psi, axis=-1, keepdims=True)
     v = np.einsum("...j,...j->...", ball_velocity, e_psi)
-    return (-0.5 * drag_coefficient * density * np.pi * ball_radius ** 2 * np.abs(v) * v)[..., None] * e_psi
+    return (-(0.5 * drag_coefficient * density * np.pi * ball_radius ** 2 * np.abs(v) + linear) * v)[..., None] * e_psi
+
+
+def jet_momentum_factor(oil_flow, density, pitch_radius, exit_radius, balls):
+    """k = rho Q r_x² / (Z r_p²), kg/s, of the jet oil's momentum (Euler) loss on each ball
+    (MODEL.md §11c, eq. 11c.2): oil entering at Q (m³/s) without swirl and leaving at the
+    balls' orbital angular speed at radius r_x (m) takes the torque rho Q r_x² ω_c; shared by
+    the Z balls at the pitch radius r_p (m) it is k v on each (v = ω_c r_p), power
+    rho Q (ω_c r_x)² in all."""
+    return density * oil_flow * exit_radius ** 2 / (balls * pitch_radius ** 2)

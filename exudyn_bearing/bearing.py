@@ -12,6 +12,7 @@ from functools import cached_property
 import numpy as np
 
 from contact import geometry, hertz
+from contact.cage import jet_momentum_factor
 from contact.thermal_expansion import HeatedGeometry, heated_geometry
 
 
@@ -43,7 +44,8 @@ STEEL = Material(210e9, 0.3, 7850.0)
 
 @dataclass(frozen=True)
 class BallDrag:
-    """Sphere drag on each ball's orbital motion, F_D = 1/2 C_D rho_eff pi r² v² (MODEL.md §8).
+    """Drag on each ball's orbital motion (MODEL.md §8, §11c): the sphere's
+    F_D = 1/2 C_D rho_eff pi r² v² and, with ``oil_flow``, the jet oil's momentum.
 
     Parameters
     ----------
@@ -51,11 +53,17 @@ class BallDrag:
         C_D (sphere, Re ~ 1e3–1e5: 0.5).
     oil_volume_fraction : float
         Oil fraction of the oil–air mixture in the bearing, in [0, 1];
-        rho_eff = fraction * lubricant density. 0 switches drag off.
+        rho_eff = fraction * lubricant density. 0 switches the sphere drag off.
+    oil_flow : float
+        Jet oil through the bearing, m^3/s; > 0 adds its momentum (Euler) loss, the oil
+        entering without swirl and leaving at the balls' orbital speed at the outer raceway
+        (MODEL.md §11c, eq. 11c.2). 0 (default): none, as the paper. With a ``[thermal]``
+        section it must be the network's ``oil_flow`` (one oil).
     """
 
     drag_coefficient: float = 0.5
     oil_volume_fraction: float = 1.0
+    oil_flow: float = 0.0
 
     def __post_init__(self) -> None:
         _finite("drag_coefficient", self.drag_coefficient, positive=False)
@@ -64,11 +72,27 @@ class BallDrag:
         _finite("oil_volume_fraction", self.oil_volume_fraction, positive=False)
         if not 0.0 <= self.oil_volume_fraction <= 1.0:
             raise ValueError(f"oil_volume_fraction must lie in [0, 1], got {self.oil_volume_fraction!r}")
+        _finite("oil_flow", self.oil_flow, positive=False)
+        if self.oil_flow < 0:
+            raise ValueError(f"oil_flow must be non-negative (m^3/s), got {self.oil_flow!r}")
+
+    @property
+    def active(self) -> bool:
+        """Whether any drag acts (the sphere's or the jet's)."""
+        return self.drag_coefficient * self.oil_volume_fraction > 0 or self.oil_flow > 0
 
     def force(self, speed, ball_radius, lubricant_density):
-        """Drag force magnitude, N, for the ball-centre speed ``speed`` (m/s) through still oil."""
+        """Sphere drag force magnitude, N, for the ball-centre speed ``speed`` (m/s) through still oil."""
         rho = self.oil_volume_fraction * lubricant_density
         return 0.5 * self.drag_coefficient * rho * math.pi * ball_radius ** 2 * np.square(speed)
+
+    def momentum_factor(self, bearing, lubricant_density) -> float:
+        """k, kg/s, of the jet's momentum force k v on each ball (:func:`contact.cage.jet_momentum_factor`;
+        MODEL.md eq. 11c.2), the oil leaving at the outer raceway, r_p + D/2; 0 without ``oil_flow``."""
+        if self.oil_flow == 0:
+            return 0.0
+        return jet_momentum_factor(self.oil_flow, lubricant_density, bearing.pitch_radius,
+                                   bearing.pitch_radius + bearing.ball_radius, bearing.balls)
 
 
 @dataclass(frozen=True)

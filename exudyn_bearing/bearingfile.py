@@ -26,6 +26,7 @@ Example::
     [drag]                           # optional; fully flooded sphere drag if absent
     drag_coefficient = 0.5
     oil_volume_fraction = 1.0
+    oil_flow = 0.0                   # m^3/s of jet oil; > 0: its momentum loss (MODEL.md §11c)
     [cage]                           # optional; CageModel() if absent (MODEL.md §1, §11d)
     kind = "rigid"                   # or "spring-chain", "none"
     guidance = "outer"               # or "inner", "balls"

@@ -69,14 +69,17 @@ CAGE_KINDS = {"none": 0, "rigid": 1, "spring-chain": 2}
 def cage_record(setup, axis, origin) -> CageRecord:
     """The compiled path's :class:`~contact.kernels.records.CageRecord` of ``setup``'s cage and
     ball drag in a bearing frame with ``axis`` (3,) and ``origin`` (3,) m (MODEL.md §1, §8):
-    pockets evenly spaced from azimuth 0, the drag's factor 1/2 C_D φ ρ π r² (kg/m; 0: none),
+    pockets evenly spaced from azimuth 0, the drag's factor 1/2 C_D φ ρ π r² (kg/m; 0: none)
+    and the jet momentum's k (kg/s, eq. 11c.2; 0: none),
     the pocket damping of :meth:`~exudyn_bearing.cage.CageModel.damping_for`."""
     bearing, cage, drag = setup.bearing, setup.cage, setup.drag
-    drag_factor = 0.0
+    drag_factor = drag_linear = 0.0
     if drag is not None and drag.drag_coefficient * drag.oil_volume_fraction > 0:
         drag_factor = (0.5 * drag.drag_coefficient * drag.oil_volume_fraction * setup.lubricant.density * np.pi
                        * bearing.ball_radius ** 2)
+    if drag is not None:
+        drag_linear = drag.momentum_factor(bearing, setup.lubricant.density)
     pockets = 2 * np.pi * np.arange(bearing.balls) / bearing.balls
     return CageRecord(CAGE_KINDS[cage.kind], pockets, float(bearing.pitch_radius), float(cage.clearance),
                       float(cage.stiffness), float(cage.damping_for(bearing.ball_mass)), axis, origin,
-                      float(drag_factor))
+                      float(drag_factor), float(drag_linear))

@@ -18,6 +18,8 @@ Example::
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, fields
 from dataclasses import replace as _replace
 
@@ -103,6 +105,11 @@ class BearingSetup:
             if not isinstance(value, allowed):
                 names = " or ".join("None" if t is type(None) else t.__name__ for t in allowed)
                 raise ValueError(f"{name} must be a {names}, got {type(value).__name__}")
+        flow = 0.0 if self.drag is None else self.drag.oil_flow
+        if flow > 0 and self.thermal is not None and not math.isclose(flow, self.thermal.oil_flow, rel_tol=1e-9):
+            # one oil: the jet whose momentum the balls supply is the oil that carries the heat
+            raise ValueError(f"drag.oil_flow ({flow:g} m^3/s) and thermal.oil_flow ({self.thermal.oil_flow:g} "
+                             "m^3/s) are the same jet oil: give them equal")
 
     def replace(self, **changes) -> "BearingSetup":
         """A copy with ``changes`` (field names, or the builder's ``ballDrag``/``contactLaw``);

@@ -16,6 +16,7 @@ from contact.lubricant import REFERENCE_LUBRICANT as REF
 from contact.surface import Defect, SurfaceModel, Waviness
 from exudyn_bearing import REFERENCE_BEARING as B
 from exudyn_bearing import races
+from exudyn_bearing.bearing import BallDrag
 from exudyn_bearing.cage import CageModel
 from exudyn_bearing.model.builder import CreateAngularContactBearing
 
@@ -61,6 +62,20 @@ def _scene(law=ContactLaw(), **kw):
     return sc, con, q_abs, qt[idx] * (1 + rng.normal(0, 1e-3, idx.size))
 
 
+def quasi_dynamic_power_gap(balance, x):
+    """(drive power, summed losses, the contacts' normal work), W, of the quasi-dynamic state
+    ``x`` of ``balance`` (MODEL.md §12a). Its balls move at w_c about the cage centre, not
+    along their orbit's radial changes, so each contact's load Q works on its approach rate:
+    the drive power is the losses less sum Q dp/dt, exactly where the accounting is right (the
+    inner race's torque about its own centre, the balls' and drag's powers on the same
+    velocities)."""
+    from exudyn_bearing.solvers.azimuth_power import azimuth_drive_power, azimuth_losses
+
+    kin, f = balance.contacts(x)
+    normal = float(np.sum(np.sum(f.force * kin.normal, axis=1) * kin.penetration_rate))
+    return azimuth_drive_power(balance, x), sum(azimuth_losses(balance, x).values()), normal
+
+
 # (from tests/test_compiled.py)
 SCENES = {
     "axial, rigid cage, drag": dict(axialForce=1300.0),
@@ -68,6 +83,8 @@ SCENES = {
     "spring chain, no drag": dict(axialForce=300.0, cage=CageModel(kind="spring-chain"), ballDrag=None),
     "pocket play, free outer race": dict(axialForce=600.0, cage=CageModel(clearance=2e-6), outerRace=races.Free()),
     "no traction": dict(axialForce=1300.0, law=ContactLaw(traction="none")),
+    # MODEL.md eq. 11c.2: the jet oil's momentum beside a quarter-flooded sphere drag
+    "jet momentum": dict(axialForce=1300.0, ballDrag=BallDrag(0.5, 0.25, oil_flow=2e-4)),
     # MODEL.md §11d: the outer land's friction torque on the cage (and its reaction)
     "land friction, outer-guided cage": dict(axialForce=1300.0, cage=CageModel(land_width=0.01)),
     # MODEL.md §11d: ball–pocket friction at the contact points (the state's 1-um noise loads the pockets)

@@ -81,15 +81,15 @@ def pocket_friction(cage_force, balls, cage, ball_radius, mu, slip_scale, fricti
 @njit(cache=True, error_model="numpy")
 def cage_and_drag(c, v, params, cage, cage_force, drag_force):
     """Cage forces (``params.kind`` 1: rigid cage pockets, MODEL.md §1; 2: spring chain
-    P9/P10; 0: none) and drag forces (MODEL.md §8, ``params.drag_factor`` = 1/2 C_D rho pi r²,
-    0: none) on the balls of B states (centres ``c`` m, velocities ``v`` m/s, (B, Z, 3)), as
+    P9/P10; 0: none) and drag forces (MODEL.md §8, §11c: ``params.drag_factor`` = 1/2 C_D rho pi r²
+    and the jet momentum's ``params.drag_linear`` k, 0: none) on the balls of B states (centres ``c`` m, velocities ``v`` m/s, (B, Z, 3)), as
     :mod:`contact.cage`; ``params`` a :class:`~contact.kernels.records.CageRecord`, ``cage``
     the cage body's :class:`~contact.kernels.records.BodyStates`; written into
     ``cage_force``, ``drag_force`` (B, Z, 3)."""
     kind, pocket_angles = params.kind, params.pocket_angles
     pitch_radius, clearance = params.pitch_radius, params.clearance
     stiffness, damping, axis, origin = params.stiffness, params.damping, params.axis, params.origin
-    drag_factor = params.drag_factor
+    drag_factor, drag_linear = params.drag_factor, params.drag_linear
     cage_o, cage_r, cage_v, cage_w = cage.position, cage.rotation, cage.velocity, cage.omega
     nb, z = c.shape[0], c.shape[1]
     gap = 0.5 * clearance
@@ -154,7 +154,7 @@ def cage_and_drag(c, v, params, cage, cage_force, drag_force):
                     cage_force[ib, k, 0] += mag * e0
                     cage_force[ib, k, 1] += mag * e1
                     cage_force[ib, k, 2] += mag * e2
-        if drag_factor > 0.0:
+        if drag_factor > 0.0 or drag_linear > 0.0:
             for j in range(z):
                 r0, r1, r2 = c[ib, j, 0] - origin[0], c[ib, j, 1] - origin[1], c[ib, j, 2] - origin[2]
                 e0 = axis[1] * r2 - axis[2] * r1
@@ -163,7 +163,7 @@ def cage_and_drag(c, v, params, cage, cage_force, drag_force):
                 norm = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
                 e0, e1, e2 = e0 / norm, e1 / norm, e2 / norm
                 speed = v[ib, j, 0] * e0 + v[ib, j, 1] * e1 + v[ib, j, 2] * e2
-                mag = -drag_factor * abs(speed) * speed
+                mag = -(drag_factor * abs(speed) + drag_linear) * speed
                 drag_force[ib, j, 0] = mag * e0
                 drag_force[ib, j, 1] = mag * e1
                 drag_force[ib, j, 2] = mag * e2

@@ -107,6 +107,7 @@ class CageRecord(NamedTuple):
     axis: np.ndarray  #: (3,): bearing axis
     origin: np.ndarray  #: (3,): bearing centre, m
     drag_factor: float  #: 1/2 C_D ρ π r² (times the oil fraction), kg/m; 0: no drag
+    drag_linear: float = 0.0  #: the jet oil's momentum factor k (MODEL.md eq. 11c.2), kg/s; 0: none
 
 
 def traction_record(lubricant, limiting_shear=None, film_modulus=None) -> LawRecord:

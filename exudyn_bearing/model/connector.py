@@ -459,10 +459,10 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
             cage_force = cage_physics.spring_chain_forces(c, self.axis, self.cage_record.pitch_radius, self.cage.stiffness,
                                                           self.origin)
         drag_force = np.zeros((bsz, z, 3))
-        if self.drag is not None and self.drag.drag_coefficient * self.drag.oil_volume_fraction > 0:
+        if self.drag is not None and self.drag.active:
             drag_force = cage_physics.drag_forces(c, v, self.axis, self.origin, self.drag.drag_coefficient,
                                                   self.drag.oil_volume_fraction * self.lubricant.density,
-                                                  self.bearing.ball_radius)
+                                                  self.bearing.ball_radius, self.cage_record.drag_linear)
         force[:, balls] += f_con.sum(axis=1) + cage_force + drag_force
         torque[:, balls] += m_con.sum(axis=1)
         out = np.empty((bsz, n_nodes, 6))

@@ -96,10 +96,11 @@ def setup_inputs(setup, **settings) -> dict:
 
 def assumptions_record(drag=None, contact_law=None, lubricant=None) -> dict:
     """The physics choices a reader needs beside the numbers (issue 34): the ball drag's
-    coefficient and oil volume fraction (None: no drag), whether rolling resistance and the
+    coefficient, oil volume fraction and jet oil flow (m^3/s; None: no drag), whether rolling resistance and the
     thermal film are on, and the traction law with its lubricant constants."""
     out = {"ball_drag_coefficient": None if drag is None else float(drag.drag_coefficient),
-           "oil_volume_fraction": None if drag is None else float(drag.oil_volume_fraction)}
+           "oil_volume_fraction": None if drag is None else float(drag.oil_volume_fraction),
+           "jet_oil_flow_m3_s": None if drag is None else float(drag.oil_flow)}
     if contact_law is not None:
         out |= {"traction": contact_law.traction, "rolling_resistance": bool(contact_law.rolling_resistance),
                 "thermal_film": bool(contact_law.thermal_film)}
@@ -116,6 +117,8 @@ def assumptions_line(assumptions: dict) -> str:
             f"ball drag C_D {assumptions['ball_drag_coefficient']:g} at oil fraction {x:g}"
             + (" (fully flooded)" if x == 1 else ""))
     parts = [drag]
+    if assumptions.get("jet_oil_flow_m3_s"):
+        parts.append(f"jet oil momentum at {assumptions['jet_oil_flow_m3_s'] * 6e7:g} cm3/min")
     if "rolling_resistance" in assumptions:
         parts.append(f"rolling resistance {'on' if assumptions['rolling_resistance'] else 'off'}")
         parts.append(f"thermal film {'on' if assumptions['thermal_film'] else 'off'}")

@@ -40,6 +40,7 @@ class _Balance:
         self.tube, self.grooves, self.signs, self.params, self.terms = records[:5]
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
+        self.drag_linear = 0.0 if drag is None else drag.momentum_factor(bearing, lubricant.density)  # eq. 11c.2
         self.inertia = bearing.ball_inertia
         d = bearing.ball_diameter
         self.force_scale = max(axial, abs(radial), 1e-3) / (z * max(math.sin(bearing.contact_angle), 0.1))
@@ -133,8 +134,9 @@ class _Balance:
         force = contact_force[:z] + contact_force[z:]
         force[:, :2] += self.b.ball_mass * w_c ** 2 * arm[:z]  # -m a = m w_c^2 (c - e)
         force[:, 1] += pocket
-        if self.density > 0:
-            force += cage_physics.drag_forces(c, v[:z], _E_Z, np.zeros(3), self.c_d, self.density, self.b.ball_radius)
+        if self.density > 0 or self.drag_linear > 0:
+            force += cage_physics.drag_forces(c, v[:z], _E_Z, np.zeros(3), self.c_d, self.density, self.b.ball_radius,
+                                              self.drag_linear)
         moment = contact_moment[:z] + contact_moment[z:] - self.inertia * w_c * np.cross(_E_Z, w_b)
         s = self.force_scale
         torque = self.land[0] * (self.land[1] - w_c) - float(np.sum(pocket * (c[:, 0] - self.offset_r)))

@@ -121,6 +121,7 @@ class _OneBall:
         self.tube, self.grooves, self.signs, self.params, self.terms = records[:5]
         self.density = 0.0 if drag is None else drag.oil_volume_fraction * lubricant.density
         self.c_d = 0.0 if drag is None else drag.drag_coefficient
+        self.drag_linear = 0.0 if drag is None else drag.momentum_factor(bearing, lubricant.density)  # eq. 11c.2
         self.inertia = bearing.ball_inertia
         d = bearing.ball_diameter
         # ~ a ball's contact load (a zero-clearance bearing has no free angle: at least 0.1)
@@ -188,9 +189,9 @@ class _OneBall:
         w_c, w_b, c, _ = self.unpack(x)
         _, f = self.contacts(x)
         force = f.force[0] + f.force[1] + self.b.ball_mass * c[0] * w_c ** 2 * np.array([1.0, 0.0, 0.0])
-        if self.density > 0:
+        if self.density > 0 or self.drag_linear > 0:
             force += cage_physics.drag_forces(c[None], np.array([[0.0, w_c * c[0], 0.0]]), _E_Z, np.zeros(3),
-                                              self.c_d, self.density, self.b.ball_radius)[0]
+                                              self.c_d, self.density, self.b.ball_radius, self.drag_linear)[0]
         moment = f.moment[0] + f.moment[1] - self.inertia * w_c * np.cross(_E_Z, w_b)
         if self.land[0] > 0:  # a centred cage (eccentricity 0)
             pocket, friction, arm = self.pocket_forces(c, w_c, w_b)

@@ -29,6 +29,8 @@ def steady_losses(solved) -> dict:
            "rolling_resistance": z * float(np.sum(f.rolling_loss)) if f.rolling_loss is not None else 0.0}
     v = w_c * c[0]
     out["ball_drag"] = z * 0.5 * ball.c_d * ball.density * np.pi * b.ball_radius ** 2 * abs(v) ** 3
+    if ball.drag_linear > 0:  # the jet oil's momentum, eq. 11c.2
+        out["ball_drag"] += z * ball.drag_linear * v ** 2
     k_land, w_land = ball.land
     guidance = "land_outer" if w_land == solved.w_o else "land_inner"
     out[guidance] = k_land * (w_land - w_c) ** 2
