@@ -8,7 +8,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, vectorize
+from numba import njit
+
+from .elementwise import apply
 
 __all__ = ["central_film", "central_film_thickness", "minimum_film_thickness"]
 
@@ -24,9 +26,11 @@ def central_film(speed, load, r_x, ellipticity, e_prime, viscosity, pressure_vis
         1.0 - 0.61 * math.exp(-0.73 * ellipticity))
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64, float64, float64)"], cache=True)
-def _central_film(speed, load, r_x, ellipticity, e_prime, viscosity, pressure_viscosity):
-    return central_film(speed, load, r_x, ellipticity, e_prime, viscosity, pressure_viscosity)
+@njit(cache=True, error_model="numpy")
+def _central_film(out, speed, load, r_x, ellipticity, e_prime, viscosity, pressure_viscosity):
+    for i in range(out.size):
+        out[i] = central_film(speed[i], load[i], r_x[i], ellipticity[i], e_prime[i], viscosity[i],
+                              pressure_viscosity[i])
 
 
 def _dimensionless(entrainment_speed, load, r_x, e_prime, lubricant):
@@ -61,9 +65,8 @@ def central_film_thickness(entrainment_speed, load, r_x, ellipticity, e_prime, l
         eta_0 and c_etaP are used (isothermal inlet at T_R).
     """
     _dimensionless(entrainment_speed, load, r_x, e_prime, lubricant)  # the inputs' checks
-    return _central_film(np.asarray(entrainment_speed, dtype=float), np.asarray(load, dtype=float),
-                         np.asarray(r_x, dtype=float), np.asarray(ellipticity, dtype=float), float(e_prime),
-                         float(lubricant.viscosity), float(lubricant.pressure_viscosity))
+    return apply(_central_film, entrainment_speed, load, r_x, ellipticity, float(e_prime), float(lubricant.viscosity),
+                 float(lubricant.pressure_viscosity))
 
 
 def minimum_film_thickness(entrainment_speed, load, r_x, ellipticity, e_prime, lubricant):

@@ -9,7 +9,7 @@ alpha_r = R_y / R_x and the effective modulus E' = 2 / ((1-nu1²)/E1 + (1-nu2²)
 Everything is vectorized: pass arrays of contacts. The laws the compiled kernels share
 (:mod:`contact.kernels.race`) are written once, as scalar numba functions (``fit_*``,
 :func:`stiffness_of`, :func:`semi_axis_of`, :func:`max_pressure_of`) that the kernels call
-and the array functions here apply element by element through their ufuncs.
+and the array functions here apply element by element (:mod:`contact.elementwise`).
 """
 from __future__ import annotations
 
@@ -17,8 +17,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, vectorize
+from numba import njit
 from scipy import optimize, special
+
+from .elementwise import apply
 
 __all__ = [
     "effective_modulus", "brewe_hamrock", "exact_ellipticity", "HertzContact",
@@ -41,9 +43,6 @@ def effective_modulus(youngs_1, poisson_1, youngs_2=None, poisson_2=None):
         if not np.all((np.asarray(value) > -1) & (np.asarray(value) < 0.5)):
             raise ValueError(f"poisson_ratio (poisson_1, poisson_2) must lie in (-1, 0.5), got {value!r}")
     return 2.0 / ((1 - np.square(poisson_1)) / youngs_1 + (1 - np.square(poisson_2)) / youngs_2)
-
-
-_F8 = "float64"
 
 
 @njit(cache=True, error_model="numpy")
@@ -89,34 +88,30 @@ def max_pressure_of(load, a, b):
     return 0.0
 
 
-@vectorize([f"{_F8}({_F8})"], cache=True)
-def _fit_ellipticity(ratio):
-    return fit_ellipticity(ratio)
+@njit(cache=True, error_model="numpy")
+def _fits(out_k, out_first, out_second, ratio):
+    for i in range(ratio.size):
+        out_k[i] = fit_ellipticity(ratio[i])
+        out_first[i] = fit_first_integral(ratio[i])
+        out_second[i] = fit_second_integral(ratio[i])
 
 
-@vectorize([f"{_F8}({_F8})"], cache=True)
-def _fit_first_integral(ratio):
-    return fit_first_integral(ratio)
+@njit(cache=True, error_model="numpy")
+def _stiffness(out, ellipticity, first, second, radius, e_prime):
+    for i in range(out.size):
+        out[i] = stiffness_of(ellipticity[i], first[i], second[i], radius[i], e_prime[i])
 
 
-@vectorize([f"{_F8}({_F8})"], cache=True)
-def _fit_second_integral(ratio):
-    return fit_second_integral(ratio)
+@njit(cache=True, error_model="numpy")
+def _semi_axis(out, load, ellipticity, second, radius, e_prime, transverse):
+    for i in range(out.size):
+        out[i] = semi_axis_of(load[i], ellipticity[i], second[i], radius[i], e_prime[i], transverse)
 
 
-@vectorize([f"{_F8}({_F8}, {_F8}, {_F8}, {_F8}, {_F8})"], cache=True)
-def _stiffness(ellipticity, first, second, radius, e_prime):
-    return stiffness_of(ellipticity, first, second, radius, e_prime)
-
-
-@vectorize([f"{_F8}({_F8}, {_F8}, {_F8}, {_F8}, {_F8}, boolean)"], cache=True)
-def _semi_axis(load, ellipticity, second, radius, e_prime, transverse):
-    return semi_axis_of(load, ellipticity, second, radius, e_prime, transverse)
-
-
-@vectorize([f"{_F8}({_F8}, {_F8}, {_F8})"], cache=True)
-def _max_pressure(load, a, b):
-    return max_pressure_of(load, a, b)
+@njit(cache=True, error_model="numpy")
+def _max_pressure(out, load, a, b):
+    for i in range(out.size):
+        out[i] = max_pressure_of(load[i], a[i], b[i])
 
 
 def brewe_hamrock(radius_ratio):
@@ -133,7 +128,12 @@ def brewe_hamrock(radius_ratio):
     k, first, second : ndarray
     """
     alpha_r = np.asarray(radius_ratio, dtype=float)
-    return _fit_ellipticity(alpha_r), _fit_first_integral(alpha_r), _fit_second_integral(alpha_r)
+    flat = np.ascontiguousarray(alpha_r).reshape(-1)
+    k, first, second = np.empty(flat.size), np.empty(flat.size), np.empty(flat.size)
+    _fits(k, first, second, flat)
+    if not alpha_r.shape:  # numpy floats for a scalar ratio, as before
+        return k[0], first[0], second[0]
+    return k.reshape(alpha_r.shape), first.reshape(alpha_r.shape), second.reshape(alpha_r.shape)
 
 
 def _complete_integrals(k):
@@ -210,12 +210,12 @@ class HertzContact:
         """Semi-axes (a transverse, b rolling), m, for load Q (MODEL.md §3)."""
         load = np.maximum(np.asarray(load, dtype=float), 0.0)
         parts = (load, self.ellipticity, self.second_integral, self.curvature_radius, self.effective_modulus)
-        return _semi_axis(*parts, True), _semi_axis(*parts, False)
+        return apply(_semi_axis, *parts, flags=(True,)), apply(_semi_axis, *parts, flags=(False,))
 
     def max_pressure(self, load):
         """Peak pressure p_max = 3Q / (2 pi a b), Pa; 0 for an unloaded contact."""
         load = np.maximum(np.asarray(load, dtype=float), 0.0)
-        return _max_pressure(load, *self.semi_axes(load))
+        return apply(_max_pressure, load, *self.semi_axes(load))
 
 
 def hertz_contact(r_x, r_y, e_prime, method="fit"):
@@ -244,7 +244,7 @@ def hertz_contact(r_x, r_y, e_prime, method="fit"):
     else:
         raise ValueError(f"method must be 'fit' or 'exact', got {method!r}")
     radius = 1.0 / (1.0 / r_x + 1.0 / r_y)
-    stiffness = _stiffness(k, first, second, radius, e_prime)
+    stiffness = apply(_stiffness, k, first, second, radius, e_prime)
     return HertzContact(stiffness, k, first, second, radius, np.asarray(e_prime, dtype=float))
 
 

@@ -1,15 +1,16 @@
 """Hydrodynamic (EHL) rolling resistance of a ball–race contact (MODEL.md §11b; beyond the paper).
 
 A per-contact term (:mod:`contact.terms`), written once as scalar numba functions that the
-compiled kernels call per contact and numpy calls as ufuncs (the array functions below);
+compiled kernels call per contact and numpy calls element by element (the array functions below, :mod:`contact.elementwise`);
 switched on by :class:`contact.ballrace.ContactLaw` (``rolling_resistance``).
 """
 from __future__ import annotations
 
 import math
 
-from numba import njit, vectorize
+from numba import njit
 
+from .elementwise import apply
 from .hertz import fit_second_integral
 
 __all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment",
@@ -60,22 +61,23 @@ def rolling_loads(force, r_x, ball_radius, rolling_rate):
     return -2.0 * force * r_x * sense, force * (2.0 * r_x / ball_radius - 1.0) * sense
 
 
-_SIG10 = "float64(" + ", ".join(["float64"] * 10) + ")"
+@njit(cache=True, error_model="numpy")
+def _hydrodynamic_forces(out, load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor):
+    for i in range(out.size):
+        out[i] = hydrodynamic_force(load[i], entrainment[i], r_x[i], r_y[i], a[i], b[i], e_prime[i], viscosity[i],
+                                    width[i], film_factor[i])
 
 
-@vectorize([_SIG10], cache=True)
-def _hydrodynamic_ufunc(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor):
-    return hydrodynamic_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor)
+@njit(cache=True, error_model="numpy")
+def _couples(out, force, r_x, rolling_rate):
+    for i in range(out.size):
+        out[i] = rolling_loads(force[i], r_x[i], 1.0, rolling_rate[i])[0]
 
 
-@vectorize(["float64(float64, float64, float64)"], cache=True)
-def _couple_ufunc(force, r_x, rolling_rate):
-    return rolling_loads(force, r_x, 1.0, rolling_rate)[0]
-
-
-@vectorize(["float64(float64, float64, float64, float64)"], cache=True)
-def _push_ufunc(force, r_x, ball_radius, rolling_rate):
-    return rolling_loads(force, r_x, ball_radius, rolling_rate)[1]
+@njit(cache=True, error_model="numpy")
+def _pushes(out, force, r_x, ball_radius, rolling_rate):
+    for i in range(out.size):
+        out[i] = rolling_loads(force[i], r_x[i], ball_radius[i], rolling_rate[i])[1]
 
 
 def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width=None):
@@ -114,18 +116,18 @@ def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, visco
     width : float, optional
         𝓛 of the truncation factor, m (the ball diameter); None: no truncation.
     """
-    return _hydrodynamic_ufunc(load, entrainment, r_x, r_y, a, b, float(e_prime), viscosity,
-                               0.0 if width is None else float(width), 1.0)
+    return apply(_hydrodynamic_forces, load, entrainment, r_x, r_y, a, b, float(e_prime), viscosity,
+                 0.0 if width is None else float(width), 1.0)
 
 
 def rolling_resistance_moment(force, r_x, rolling_rate):
     """Couple of the rolling resistance on the ball about the transverse axis t2, N m
     (:func:`rolling_loads`, MODEL.md §11b), on arrays; equal and opposite on the race."""
-    return _couple_ufunc(force, r_x, rolling_rate)
+    return apply(_couples, force, r_x, rolling_rate)
 
 
 def rolling_resistance_force(force, r_x, ball_radius, rolling_rate):
     """Net tangential force of the rolling resistance on the ball at the contact point along
     the rolling direction t1, N (:func:`rolling_loads`, MODEL.md §11b), on arrays; the race
     takes the opposite force there."""
-    return _push_ufunc(force, r_x, float(ball_radius), rolling_rate)
+    return apply(_pushes, force, r_x, float(ball_radius), rolling_rate)

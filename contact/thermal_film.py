@@ -1,10 +1,12 @@
 """Inlet shear heating: the thermal reduction of the EHD film at speed (MODEL.md §11e; beyond
 the paper). A per-contact term (:mod:`contact.terms`), written once as a scalar numba
-function that the compiled kernels call per contact and numpy calls as a ufunc."""
+function that the compiled kernels call per contact and the array function applies element by element (:mod:`contact.elementwise`)."""
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, vectorize
+from numba import njit
+
+from .elementwise import apply
 
 __all__ = ["thermal_film_factor", "film_factor"]
 
@@ -33,15 +35,15 @@ def film_factor(entrainment, slip, max_pressure, e_prime, viscosity, heating, fl
     return min(max(phi, floor), 1.0)
 
 
-@vectorize(["float64(float64, float64, float64, float64, float64, float64, float64)"], cache=True)
-def _film_factor_ufunc(entrainment, slip, max_pressure, e_prime, viscosity, heating, floor):
-    return film_factor(entrainment, slip, max_pressure, e_prime, viscosity, heating, floor)
+@njit(cache=True, error_model="numpy")
+def _film_factors(out, entrainment, slip, max_pressure, e_prime, viscosity, heating, floor):
+    for i in range(out.size):
+        out[i] = film_factor(entrainment[i], slip[i], max_pressure[i], e_prime[i], viscosity[i], heating[i], floor[i])
 
 
 def thermal_film_factor(entrainment, slip, max_pressure, e_prime, viscosity, temperature_viscosity,
                         thermal_conductivity, floor=0.05):
     """φ_T of :func:`film_factor` on arrays (broadcast; SI units): ``temperature_viscosity``
     c_ηT (1/K) and ``thermal_conductivity`` K (W/(m K)) of the lubricant."""
-    return _film_factor_ufunc(np.asarray(entrainment, dtype=float), np.asarray(slip, dtype=float),
-                              np.asarray(max_pressure, dtype=float), float(e_prime), np.asarray(viscosity, dtype=float),
-                              float(temperature_viscosity) / float(thermal_conductivity), float(floor))
+    return apply(_film_factors, entrainment, slip, max_pressure, float(e_prime), viscosity,
+                 float(temperature_viscosity) / float(thermal_conductivity), float(floor))

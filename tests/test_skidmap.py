@@ -174,3 +174,21 @@ def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
     point = table.points[0]
     assert point.simulated_time == 0.008 and point.settled is None and point.time is None
     assert "too short to judge at the cap (0.008 s)" in (tmp_path / "skid_map.md").read_text()
+
+
+def test_thresholds_refined_on_workers_are_those_refined_here():
+    """The thresholds refined on a :class:`CaseRunner`'s two worker processes (as
+    :func:`skid_map` refines them, on the workers that ran the points) are, dict for dict,
+    the ones refined one after another in this process: the same bisection and runs, only
+    elsewhere; two speeds, each bracketed by its grid."""
+    from exudyn_bearing.studies.grid import CaseRunner
+
+    pts = [SkidPoint(a, 0.0, rpm, 0.1, kinematic_cage_slip_percent=s, cage_slip_percent=s, peak_ball_slip=0.1,
+                     settled=True) for rpm, grid in ((900.0, ((800, 2.2), (1500, 0.27))),
+                                                     (1800.0, ((1500, 2.5), (3000, 0.23)))) for a, s in grid]
+    result = SkidMap(B, pts)
+    here = result.refine_thresholds(confirm_time=0.002, tolerance=0.2)
+    with CaseRunner(2) as runner:
+        there = result.refine_thresholds(confirm_time=0.002, tolerance=0.2, runner=runner)
+    assert [t["rpm"] for t in here] == [900.0, 1800.0] and all("bracket" in t for t in here)
+    assert there == here

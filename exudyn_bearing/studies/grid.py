@@ -13,7 +13,7 @@ import pickle
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
-__all__ = ["grid_values", "guard_folder", "read_journal", "check_picklable", "run_cases"]
+__all__ = ["grid_values", "guard_folder", "read_journal", "check_picklable", "CaseRunner", "run_cases"]
 
 
 def grid_values(name: str, values, low: float | None = 0.0, strict: bool = False, hint: str = "") -> list:
@@ -88,26 +88,56 @@ def one_thread_per_worker():
     numba.set_num_threads(1)
 
 
-def run_cases(worker, jobs: list, record, workers: int | None = None, client=None) -> None:
-    """``record(worker(job))`` for every job as it finishes: on the Dask ``client``, else in
-    ``workers`` local processes (default: the CPU count; 1: in this process). ``worker`` must
-    never raise (a failed case reports itself) and be importable at a module's top level."""
-    if client is not None:
-        from dask.distributed import as_completed as dask_completed
+class CaseRunner:
+    """Runs batches of cases on a Dask ``client``, else in ``workers`` local processes
+    (default: the CPU count; 1: in this process) that stay up for every batch until the
+    runner closes (a ``with`` block): a second batch (the skid map's thresholds after its
+    points) finds its workers imported and their kernels loaded."""
 
-        for fut in dask_completed(client.map(worker, jobs, pure=False)):
+    def __init__(self, workers: int | None = None, client=None):
+        self.client, self.workers = client, workers or os.cpu_count() or 1
+        self._pool = None
+
+    def __enter__(self) -> "CaseRunner":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Shut the local worker processes down."""
+        if self._pool is not None:
+            self._pool.shutdown()
+            self._pool = None
+
+    def run(self, worker, jobs: list, record) -> None:
+        """``record(worker(job))`` for every job as it finishes. ``worker`` must be importable
+        at a module's top level; one that raises stops the batch with its error (the skid map's
+        and data set's workers report a failed case instead)."""
+        if self.client is not None:
+            from dask.distributed import as_completed as dask_completed
+
+            for fut in dask_completed(self.client.map(worker, jobs, pure=False)):
+                record(fut.result())
+            return
+        if not jobs:
+            return
+        if self.workers == 1:
+            for job in jobs:
+                record(worker(job))
+            return
+        if self._pool is None:
+            # spawned, not forked: a process that has run the compiled contacts holds GNU OpenMP
+            # threads, and forking it aborts the child; started as jobs need them, idle ones reused
+            self._pool = ProcessPoolExecutor(max_workers=self.workers,
+                                             mp_context=multiprocessing.get_context("spawn"),
+                                             initializer=one_thread_per_worker)
+        for fut in as_completed([self._pool.submit(worker, job) for job in jobs]):
             record(fut.result())
-        return
-    if not jobs:
-        return
-    n = workers or os.cpu_count() or 1
-    if n == 1:
-        for job in jobs:
-            record(worker(job))
-        return
-    # spawned, not forked: a process that has run the compiled contacts holds GNU OpenMP
-    # threads, and forking it aborts the child
-    with ProcessPoolExecutor(max_workers=min(n, len(jobs)), mp_context=multiprocessing.get_context("spawn"),
-                             initializer=one_thread_per_worker) as pool:
-        for fut in as_completed([pool.submit(worker, job) for job in jobs]):
-            record(fut.result())
+
+
+def run_cases(worker, jobs: list, record, workers: int | None = None, client=None) -> None:
+    """``record(worker(job))`` for every job as it finishes, by a :class:`CaseRunner` of
+    ``workers`` and ``client`` for this batch alone."""
+    with CaseRunner(workers, client) as runner:
+        runner.run(worker, jobs, record)

@@ -29,7 +29,7 @@ from ..renamed import accepts_old_names
 from ..results.records import setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup, refuse_thermal
 from ..solvers.steady import steady_state
-from .grid import check_picklable, grid_values, guard_folder, read_journal, run_cases
+from .grid import CaseRunner, check_picklable, grid_values, guard_folder, read_journal
 from .skidmap_report import plot_skid_map, skid_map_markdown
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
@@ -85,6 +85,50 @@ class SkidPoint:
     @property
     def key(self):
         return (self.axial, self.radial, self.rpm, self.time)
+
+
+def _refine_threshold(args) -> tuple:
+    """Worker of :meth:`SkidMap.refine_thresholds`: (its index, the refined entry) of one
+    threshold ``entry`` whose grid points bracket ``level`` % between the loads ``bracket``:
+    the steady-state bisection and, with ``confirm_time``, the dynamic runs at its ends."""
+    index, entry, (lo, hi), setup, registered, level, tolerance, confirm_time = args
+    for name, term in registered:  # (a worker process: the terms its parent registered)
+        if name not in TERMS:
+            register_term(name, term)
+    curve = []  # (axial N, steady kinematic slip %) of every converged evaluation
+
+    def slip(axial):
+        state = steady_state(setup, axial_force=axial, rpm=entry["rpm"])
+        if not state.converged:
+            return None
+        curve.append([axial, state.kinematic_cage_slip_percent])
+        return state.kinematic_cage_slip_percent
+
+    s_lo, s_hi = slip(lo), slip(hi)
+    if s_lo is None or s_hi is None or not (s_lo >= level > s_hi):
+        return index, dict(entry, note=entry["note"] + "; the steady state does not bracket it")
+    while hi - lo > tolerance * lo:
+        mid = 0.5 * (lo + hi)
+        s_mid = slip(mid)
+        if s_mid is None:
+            break
+        lo, hi = (mid, hi) if s_mid >= level else (lo, mid)
+    # (an unconverged midpoint stops the bisection early: the note gives the width reached)
+    refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi], steady_curve=sorted(curve),
+                   note=f"steady-state bisection to ±{100 * (hi - lo) / (hi + lo):.1f} %")
+    if confirm_time:
+        from ..simulation.runner import simulate
+
+        dyn = [simulate(setup, axial_force=a, rpm=entry["rpm"], time=confirm_time).kinematic_cage_slip_percent
+               for a in (lo, hi)]
+        # the dynamic model integrates the fast traction rule (within ~1e-2 of the
+        # accurate one the steady solver uses): its own crossing, interpolated (or
+        # extrapolated) through the two runs, must lie within the bracket's width
+        crossing = lo + (dyn[0] - level) * (hi - lo) / (dyn[0] - dyn[1]) if dyn[0] != dyn[1] else None
+        refined.update(dynamic_slips=dyn, dynamic_minimum_axial=crossing,
+                       dynamic_confirms=bool(crossing is not None
+                                             and abs(crossing - refined["minimum_axial"]) <= tolerance * lo))
+    return index, refined
 
 
 def _run_point(args) -> dict:
@@ -165,7 +209,7 @@ class SkidMap:
     def refine_thresholds(self, lubricant: Lubricant = FROM_SETUP, ball_drag: BallDrag | None = FROM_SETUP,
                           contact_law: ContactLaw = FROM_SETUP, level: float = 1.0,
                           tolerance: float = 0.04, confirm_time: float | None = 0.1,
-                          cage: CageModel = FROM_SETUP) -> list[dict]:
+                          cage: CageModel = FROM_SETUP, runner: CaseRunner | None = None) -> list[dict]:
         """:meth:`thresholds`, refined where the steady-state solver applies (radial 0):
         the load at which the steady kinematic cage slip crosses ``level`` %, bisected
         between the bracketing grid loads until the bracket is ``tolerance`` of its load
@@ -175,58 +219,35 @@ class SkidMap:
         them (``dynamic_minimum_axial``) and whether it lies within the bracket's width of
         the steady one (``dynamic_confirms``). The parts not passed are the map's
         :attr:`setup`'s; a setup with defects or waviness has no steady state, and its
-        thresholds stay the grid's (noted)."""
+        thresholds stay the grid's (noted). ``runner``: a
+        :class:`~exudyn_bearing.studies.grid.CaseRunner` that refines the thresholds in
+        parallel (:func:`skid_map` passes the one that ran the points); None: one after
+        another in this process."""
         setup = as_setup(self.setup or self.bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                          cage=cage)
         if setup.surface.active:
             return [dict(entry, note=entry["note"] + "; not refined: a defect or waviness has no steady state")
                     for entry in self.thresholds(level)]
-        out = []
+        out, jobs = [], []
+        registered = applied_terms(setup.contact_law)
         for entry in self.thresholds(level):
             pts = sorted((p for p in self.points if p.rpm == entry["rpm"] and p.radial == entry["radial"]
                           and p.error is None), key=lambda p: p.axial)
             bracket = next(((lo, hi) for lo, hi in zip(pts, pts[1:]) if lo.kinematic_cage_slip_percent >= level
                             > hi.kinematic_cage_slip_percent), None)
-            if entry["radial"] != 0 or bracket is None:
-                out.append(entry)
-                continue
+            if entry["radial"] == 0 and bracket is not None:
+                jobs.append((len(out), entry, (bracket[0].axial, bracket[1].axial), setup, registered, level,
+                             tolerance, confirm_time))
+            out.append(entry)
 
-            curve = []  # (axial N, steady kinematic slip %) of every converged evaluation
+        def record(done):
+            out[done[0]] = done[1]
 
-            def slip(axial):
-                state = steady_state(setup, axial_force=axial, rpm=entry["rpm"])
-                if not state.converged:
-                    return None
-                curve.append([axial, state.kinematic_cage_slip_percent])
-                return state.kinematic_cage_slip_percent
-
-            lo, hi = bracket[0].axial, bracket[1].axial
-            s_lo, s_hi = slip(lo), slip(hi)
-            if s_lo is None or s_hi is None or not (s_lo >= level > s_hi):
-                out.append(dict(entry, note=entry["note"] + "; the steady state does not bracket it"))
-                continue
-            while hi - lo > tolerance * lo:
-                mid = 0.5 * (lo + hi)
-                s_mid = slip(mid)
-                if s_mid is None:
-                    break
-                lo, hi = (mid, hi) if s_mid >= level else (lo, mid)
-            # (an unconverged midpoint stops the bisection early: the note gives the width reached)
-            refined = dict(entry, minimum_axial=0.5 * (lo + hi), bracket=[lo, hi], steady_curve=sorted(curve),
-                           note=f"steady-state bisection to ±{100 * (hi - lo) / (hi + lo):.1f} %")
-            if confirm_time:
-                from ..simulation.runner import simulate
-
-                dyn = [simulate(setup, axial_force=a, rpm=entry["rpm"], time=confirm_time).kinematic_cage_slip_percent
-                       for a in (lo, hi)]
-                # the dynamic model integrates the fast traction rule (within ~1e-2 of the
-                # accurate one the steady solver uses): its own crossing, interpolated (or
-                # extrapolated) through the two runs, must lie within the bracket's width
-                crossing = lo + (dyn[0] - level) * (hi - lo) / (dyn[0] - dyn[1]) if dyn[0] != dyn[1] else None
-                refined.update(dynamic_slips=dyn, dynamic_minimum_axial=crossing,
-                               dynamic_confirms=bool(crossing is not None
-                                                     and abs(crossing - refined["minimum_axial"]) <= tolerance * lo))
-            out.append(refined)
+        if runner is None:
+            for job in jobs:
+                record(_refine_threshold(job))
+        else:
+            runner.run(_refine_threshold, jobs, record)
         return out
 
     def write(self, out: Path) -> list[str]:
@@ -357,17 +378,18 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
             progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
                      f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
 
-    run_cases(_run_point, jobs, record, workers=workers, client=client)
-    order = {p.key: i for i, p in enumerate(grid)}
-    result.points.sort(key=lambda p: order[p.key])
-    if refine:
-        result.refined = result.refine_thresholds()
-        if progress:
-            for t in result.refined:
-                if "bracket" in t:
-                    progress(f"threshold at {t['rpm']:g} rpm: {t['minimum_axial']:.0f} N (bracket "
-                             f"{t['bracket'][0]:.0f}–{t['bracket'][1]:.0f} N, dynamic "
-                             f"{'confirms' if t.get('dynamic_confirms') else 'does NOT confirm'} it)")
+    with CaseRunner(workers, client) as runner:
+        runner.run(_run_point, jobs, record)
+        order = {p.key: i for i, p in enumerate(grid)}
+        result.points.sort(key=lambda p: order[p.key])
+        if refine:  # on the same workers, their kernels loaded
+            result.refined = result.refine_thresholds(runner=runner)
+    if refine and progress:
+        for t in result.refined:
+            if "bracket" in t:
+                progress(f"threshold at {t['rpm']:g} rpm: {t['minimum_axial']:.0f} N (bracket "
+                         f"{t['bracket'][0]:.0f}–{t['bracket'][1]:.0f} N, dynamic "
+                         f"{'confirms' if t.get('dynamic_confirms') else 'does NOT confirm'} it)")
     if out is not None:
         result.files = result.write(Path(out))
     return result
