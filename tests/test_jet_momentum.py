@@ -3,6 +3,7 @@ equation: oil entering at Q without swirl and leaving at the balls' orbital spee
 raceway takes the power rho Q (w_c r_o)^2, and the races' drive power still equals the losses.
 The compiled and numpy force paths agree on it in tests/test_compiled.py ('jet momentum')."""
 import dataclasses
+import json
 import math
 
 import numpy as np
@@ -119,3 +120,24 @@ def test_the_bearing_file_carries_the_jet():
     assert "oil_flow" in text
     assert loads_bearing(text).drag.oil_flow == FLOW
     assert loads_bearing(dumps_bearing(setup.replace(drag=HIGH_SPEED_DRAG))).drag.oil_flow == 0.0
+
+
+def test_the_cli_runs_a_jet_bearing_file_with_and_without_the_network(tmp_path):
+    """The CLI door: ``steady --bearing`` of a file with ``[drag] oil_flow`` pays the jet
+    (its drag above the same file's without, by at least 90 % of Euler's power at its cage
+    speed); ``--thermal`` on a file without ``[thermal]`` takes the jet's flow for the network
+    (one oil) instead of stopping on two flows; the JSON records the flow."""
+    from tests.test_cli import cli_json
+
+    setup = BearingSetup(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, dataclasses.replace(HIGH_SPEED_DRAG,
+                                                                                          oil_flow=FLOW))
+    (tmp_path / "jet.toml").write_text(dumps_bearing(setup))
+    (tmp_path / "plain.toml").write_text(dumps_bearing(setup.replace(drag=HIGH_SPEED_DRAG)))
+    args = ("--axial", "667", "--rpm", "28000")
+    jet, _ = cli_json("steady", "--bearing", "jet.toml", *args, cwd=tmp_path)
+    plain, _ = cli_json("steady", "--bearing", "plain.toml", *args, cwd=tmp_path)
+    euler = _euler(ESTER_TURBINE_OIL.density, FLOW, jet["cage_speed"], HIGH_SPEED_35MM_BEARING)
+    assert jet["power_loss_W"]["ball_drag"] - plain["power_loss_W"]["ball_drag"] > 0.9 * euler
+    assert "oil_flow" in json.dumps(jet["inputs"])
+    hot, _ = cli_json("steady", "--bearing", "jet.toml", *args, "--thermal", cwd=tmp_path)
+    assert hot["converged"] and hot["thermal"]["temperatures_K"]["oil"] > 300.0

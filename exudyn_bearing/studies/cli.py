@@ -329,11 +329,13 @@ def _steps_said(solver: dict) -> str:
 
 def _thermal(args, setup):
     """``setup`` with the thermal network's defaults where ``--thermal`` asks for one and the
-    bearing file has no ``[thermal]`` (MODEL.md §14)."""
+    bearing file has no ``[thermal]`` (MODEL.md §14); its oil flow the jet's where
+    ``[drag] oil_flow`` gives one (one oil, §11c)."""
     if args.thermal and setup.thermal is None:
         from contact.bearing_thermal import ThermalModel
 
-        return setup.replace(thermal=ThermalModel())
+        flow = 0.0 if setup.drag is None else setup.drag.oil_flow
+        return setup.replace(thermal=ThermalModel(oil_flow=flow) if flow > 0 else ThermalModel())
     return setup
 
 
