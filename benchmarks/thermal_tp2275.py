@@ -54,8 +54,10 @@ def main():
         hot = steady_state(SETUP.replace(thermal=THERMAL), axial_force=667.0, rpm=rpm)
         no_jet = steady_state(NO_JET.replace(thermal=THERMAL), axial_force=667.0, rpm=rpm)
         th = hot.thermal
+        # eq. 11c.2 on the cold geometry at r_p (the model uses the grown bearing and the solved
+        # orbit radius: within ~0.5 % of this)
         b, rho = SETUP.bearing, SETUP.lubricant.density
-        jet = rho * THERMAL.oil_flow * (hot.cage_speed * (b.pitch_radius + b.ball_radius)) ** 2  # eq. 11c.2
+        jet = rho * THERMAL.oil_flow * (hot.cage_speed * (b.pitch_radius + b.ball_radius)) ** 2
         at_pitch = hot.power_loss_W["total"] - jet * (1.0 - (b.pitch_radius / (b.pitch_radius + b.ball_radius)) ** 2)
         rows.append({"rpm": rpm, "measured_W": measured, "isothermal_W": cold.power_loss_W["total"],
                      "thermal_W": hot.power_loss_W["total"], "by_source_W": hot.power_loss_W,

@@ -17,9 +17,12 @@ def apply(loop, *arrays, flags=()):
     with ``flags`` passed as they are; the result has the broadcast shape, a numpy float for
     scalar inputs (as a ufunc's). ``loop`` is a compiled function filling ``out[i]`` from the
     i-th elements of its flat, contiguous float64 inputs."""
-    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in arrays))
-    shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    arrays = [np.asarray(a, dtype=float) for a in arrays]
+    shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    # owned contiguous buffers: a broadcast view numba would type as read-only (and
+    # broadcast_arrays' views warn when numba reads their flags)
+    flat = [a.reshape(-1) if a.shape == shape and a.flags.c_contiguous and a.flags.writeable
+            else np.array(np.broadcast_to(a, shape)).reshape(-1) for a in arrays]
     out = np.empty(flat[0].size)
     loop(out, *flat, *flags)
     return out.reshape(shape) if shape else out[0]

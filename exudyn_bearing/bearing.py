@@ -76,6 +76,13 @@ class BallDrag:
         if self.oil_flow < 0:
             raise ValueError(f"oil_flow must be non-negative (m^3/s), got {self.oil_flow!r}")
 
+    def __repr__(self) -> str:
+        # without a jet, the repr from before the jet: result folders record their inputs by
+        # it (studies.grid.guard_folder), and the physics of those is unchanged
+        jet = f", oil_flow={self.oil_flow!r}" if self.oil_flow else ""
+        return (f"BallDrag(drag_coefficient={self.drag_coefficient!r}, "
+                f"oil_volume_fraction={self.oil_volume_fraction!r}{jet})")
+
     @property
     def active(self) -> bool:
         """Whether any drag acts (the sphere's or the jet's)."""

@@ -51,8 +51,8 @@ def test_steady_state_loss_rises_by_the_euler_power_and_the_drive_power_follows(
     (CWRU_6205_BEARING, 0.0, 1000.0, 1800.0)], ids=["reference", "40-mm spindle", "6205 deep groove"])
 def test_quasi_dynamic_state_carries_the_jet_on_every_ball(bearing, axial, radial, rpm):
     """Combined or radial load (§12a): each ball pays k v_j^2 of the jet, k = rho Q r_o^2 /
-    (Z r_p^2), so in all rho Q (w_c r_o)^2 when the balls orbit with the cage (2e-3); with
-    and without it the races' drive power is the losses less the contacts' normal work
+    (Z r_p^2), so in all rho Q (w_c r_o)^2 when the balls orbit with the cage (2e-3); with it
+    the races' drive power is the losses less the contacts' normal work
     (:func:`tests.helpers.quasi_dynamic_power_gap`, 2e-5)."""
     from exudyn_bearing.solvers.quasidynamic import seed_axial_load, solve_combined
     from tests.helpers import quasi_dynamic_power_gap
@@ -94,6 +94,9 @@ def test_dynamic_run_pays_the_jet_ball_by_ball():
     drive, loss = float(np.mean(r.drive_power()[m])), float(np.mean(r.power_loss()["total"][m]))
     assert loss == pytest.approx(drive, rel=0.01)
     assert run.assumptions["jet_oil_flow_m3_s"] == flow
+    from exudyn_bearing.results.records import units_of
+
+    assert units_of({"assumptions": run.assumptions})["assumptions"]["jet_oil_flow_m3_s"] == "m^3/s"
 
 
 @pytest.mark.parametrize("value", [-1e-5, float("nan"), float("inf")])

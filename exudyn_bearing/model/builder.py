@@ -138,8 +138,8 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
         Rigid cage (default: the bearing file's, else centred by the outer race land, 0.4 mm
         diametral play), the paper's spring chain, or none.
     ballDrag : BallDrag or None
-        Sphere drag on the balls' orbital motion (MODEL.md §8; default: the bearing file's,
-        else fully flooded); None: off.
+        Sphere drag on the balls' orbital motion and, with ``oil_flow``, the jet oil's momentum
+        (MODEL.md §8, §11c; default: the bearing file's, else fully flooded); None: off.
     surface : contact.surface.SurfaceModel
         Race and ball defects, race and ball waviness and ball-diameter variation (MODEL.md
         §13; default: the bearing file's ``[[defect]]`` and ``[waviness]``, else perfect

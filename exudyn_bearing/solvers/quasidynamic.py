@@ -88,7 +88,8 @@ class AzimuthStates:
     #: speed (MODEL.md §7, the dynamic results' skid measure), %
     kinematic_cage_slip_percent: float | None = None
     #: losses by source (traction, rolling_resistance, ball_drag, cage, total), W, and the power
-    #: the races' drives put in, W (equal in this steady state; :mod:`.azimuth_power`)
+    #: the races' drives put in, W (equal but for the contacts' normal work, 1e-4–1e-3 of
+    #: them; :mod:`.azimuth_power`)
     power_loss_W: dict | None = None
     drive_power_W: float | None = None
 

@@ -11,6 +11,7 @@ import multiprocessing
 import os
 import pickle
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
 from pathlib import Path
 
 __all__ = ["grid_values", "guard_folder", "read_journal", "check_picklable", "CaseRunner", "run_cases"]
@@ -101,14 +102,15 @@ class CaseRunner:
     def __enter__(self) -> "CaseRunner":
         return self
 
-    def __exit__(self, *exc) -> None:
-        self.close()
+    def __exit__(self, kind, *exc) -> None:
+        self.close(cancel=kind is not None)
 
-    def close(self) -> None:
-        """Shut the local worker processes down."""
+    def close(self, cancel: bool = False) -> None:
+        """Shut the local worker processes down; ``cancel``: the jobs not yet started with
+        them (an error or an interrupt stops the batch without running the rest)."""
         if self._pool is not None:
-            self._pool.shutdown()
-            self._pool = None
+            pool, self._pool = self._pool, None
+            pool.shutdown(cancel_futures=cancel)
 
     def run(self, worker, jobs: list, record) -> None:
         """``record(worker(job))`` for every job as it finishes. ``worker`` must be importable
@@ -132,8 +134,12 @@ class CaseRunner:
             self._pool = ProcessPoolExecutor(max_workers=self.workers,
                                              mp_context=multiprocessing.get_context("spawn"),
                                              initializer=one_thread_per_worker)
-        for fut in as_completed([self._pool.submit(worker, job) for job in jobs]):
-            record(fut.result())
+        try:
+            for fut in as_completed([self._pool.submit(worker, job) for job in jobs]):
+                record(fut.result())
+        except BrokenProcessPool:  # a worker died: the next batch gets fresh ones
+            self.close(cancel=True)
+            raise
 
 
 def run_cases(worker, jobs: list, record, workers: int | None = None, client=None) -> None:

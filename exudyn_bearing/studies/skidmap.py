@@ -230,6 +230,8 @@ class SkidMap:
                     for entry in self.thresholds(level)]
         out, jobs = [], []
         registered = applied_terms(setup.contact_law)
+        if runner is not None:
+            check_picklable(registered, runner.workers, runner.client)
         for entry in self.thresholds(level):
             pts = sorted((p for p in self.points if p.rpm == entry["rpm"] and p.radial == entry["radial"]
                           and p.error is None), key=lambda p: p.axial)
