@@ -54,10 +54,8 @@ def main():
         hot = steady_state(SETUP.replace(thermal=THERMAL), axial_force=667.0, rpm=rpm)
         no_jet = steady_state(NO_JET.replace(thermal=THERMAL), axial_force=667.0, rpm=rpm)
         th = hot.thermal
-        # eq. 11c.2 on the cold geometry at r_p (the model uses the grown bearing and the solved
-        # orbit radius: within ~0.5 % of this)
-        b, rho = SETUP.bearing, SETUP.lubricant.density
-        jet = rho * THERMAL.oil_flow * (hot.cage_speed * (b.pitch_radius + b.ball_radius)) ** 2
+        b, jet = SETUP.bearing, hot.power_loss_W["jet_momentum"]  # eq. 11c.2
+        # were the oil to leave at r_p: (r_p / r_o)^2 of the jet's loss (no feedback)
         at_pitch = hot.power_loss_W["total"] - jet * (1.0 - (b.pitch_radius / (b.pitch_radius + b.ball_radius)) ** 2)
         rows.append({"rpm": rpm, "measured_W": measured, "isothermal_W": cold.power_loss_W["total"],
                      "thermal_W": hot.power_loss_W["total"], "by_source_W": hot.power_loss_W,
@@ -105,7 +103,7 @@ def markdown(rows, summary):
              "NASA TP-2275 (1984), as digitized in YUXinluhk/BallBearing-Dynamics (±3 %). The ring temperatures "
              "in the last column were withdrawn by that repository's later manuscript: unverified.", "",
              "| rpm | measured (W) | thermal (W) | error | jet momentum (W) | at r_p | no jet (W) | error | "
-             "isothermal (W) | error | traction | rolling res. | drag + jet | "
+             "isothermal (W) | error | traction | rolling res. | drag | "
              "cage | inner ring (K) | balls (K) | outer ring (K) | oil out (K) | contact oil in/out (K) | "
              "kin. cage slip (%) | iterations | unverified rings in/out (K) |",
              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"

@@ -24,13 +24,15 @@ NODES = ("shaft", "inner_ring", "balls", "cage", "outer_ring", "housing", "oil")
 
 #: where each loss's heat goes, {location: {node: share}} (MODEL.md §14c): the traction and
 #: spin heat of a ball–race contact half to the ball, half to the race; drag and the rolling
-#: resistance's inlet shear heat the oil (both as in ADORE-V2's network, kernel.jl); the land's
+#: resistance's inlet shear heat the oil (both as in ADORE-V2's network, kernel.jl), and so does
+#: the jet oil's momentum loss (MODEL.md §11c: all of it, a choice); the land's
 #: shear half the cage, half the guiding ring; the pocket's friction half the balls, half the cage
 HEAT_SPLIT = {
     "inner_contacts": {"balls": 0.5, "inner_ring": 0.5},
     "outer_contacts": {"balls": 0.5, "outer_ring": 0.5},
     "rolling_resistance": {"oil": 1.0},
     "ball_drag": {"oil": 1.0},
+    "jet_momentum": {"oil": 1.0},
     "land_outer": {"cage": 0.5, "outer_ring": 0.5},
     "land_inner": {"cage": 0.5, "inner_ring": 0.5},
     "pockets": {"balls": 0.5, "cage": 0.5},

@@ -38,12 +38,14 @@ __all__ = ["BearingTemperatures", "ThermalStart", "thermal_start", "place_losses
 UPDATE_PERIOD = 1e-3
 
 
-def place_losses(s, guidance: str) -> dict:
+def place_losses(s, guidance: str, jet=None) -> dict:
     """Losses of one evaluated state ``s`` (a :class:`ConnectorState` of B = 1 states from
     :meth:`BearingConnector.states`) of a cage guided by the ``guidance`` ('inner' or
     'outer') race's land, W by place as :data:`contact.bearing_thermal.HEAT_SPLIT`
     names them (MODEL.md §14c): each race's contacts (traction and spin heat plus the normal
-    damping's), rolling resistance, ball drag, the cage's pockets and its guiding land."""
+    damping's), rolling resistance, ball drag (the sphere's: ``jet``, (B,) W of
+    :func:`~exudyn_bearing.results.outputs.jet_losses`, is the drag force's jet part, placed
+    apart), the cage's pockets and its guiding land."""
     from ..results.outputs import body_losses
 
     out = {}
@@ -53,7 +55,8 @@ def place_losses(s, guidance: str) -> dict:
     out["rolling_resistance"] = sum(0.0 if f.rolling_loss is None else float(np.sum(f.rolling_loss))
                                     for f in (s.inner_forces, s.outer_forces))
     drag, pockets, land = (float(np.sum(v)) for v in body_losses(s))
-    out["ball_drag"], out["pockets"] = drag, pockets
+    jet = 0.0 if jet is None else float(np.sum(jet))
+    out["ball_drag"], out["jet_momentum"], out["pockets"] = drag - jet, jet, pockets
     out["land_inner" if guidance == "inner" else "land_outer"] = land
     return out
 
@@ -157,7 +160,10 @@ class BearingTemperatures:
         self._next = t + self.update_period
         con = self.connector
         s = con.states(np.array([t]), q[None], q_t[None])
-        losses = place_losses(s, self.setup.cage.guidance)
+        from ..results.outputs import jet_losses
+
+        losses = place_losses(s, self.setup.cage.guidance,
+                              jet_losses(s, con.axis, con.origin, con.cage_record.drag_linear))
         network = bearing_network(self.model, self.geometry, operating_point_of(con, s), self.lubricant,
                                   self.oil_fraction, temps["oil"])
         heat = place_heat(losses)

@@ -91,7 +91,7 @@ class BearingResults:
     traction_warning: str | None = None
     #: moment all balls apply to the outer race about the bearing centre, bearing frame, (T, 3), N m
     outer_race_moment: np.ndarray = None
-    #: power the ball drag takes from the balls, (T,), W
+    #: power the ball drag takes from the balls, (T,), W (the sphere's, MODEL.md eq. 11c.1)
     drag_loss: np.ndarray = None
     #: power dissipated in the ball–pocket contacts (pocket damping; springs average out), (T,), W
     cage_loss: np.ndarray = None
@@ -99,6 +99,8 @@ class BearingResults:
     land_loss: np.ndarray = None
     #: power the guiding race puts into the cage through its land (film torque and force), (T,), W
     land_drive: np.ndarray = None
+    #: power the jet oil's momentum takes from the balls, (T,), W (MODEL.md eq. 11c.2; zero without a jet)
+    jet_loss: np.ndarray = None
 
     def last(self, fraction=1 / 3):
         """Boolean mask of the last ``fraction`` of the run."""
@@ -136,7 +138,8 @@ class BearingResults:
     def power_loss(self) -> dict:
         """Power lost by source, W, as time series (T,) (MODEL.md §11): 'traction' (traction
         and spin moment at all ball–race contacts, §6), 'rolling_resistance' (§11b),
-        'contact_damping' (the normal contact damping, §3), 'ball_drag' (§8), 'cage'
+        'contact_damping' (the normal contact damping, §3), 'ball_drag' (§8, eq. 11c.1),
+        'jet_momentum' (the jet oil's, eq. 11c.2), 'cage'
         (ball–pocket contacts with their friction, guiding land), and their 'total'. Sources
         a scene does not model are zero. Compare :meth:`drive_power`."""
         zero = np.zeros_like(self.time)
@@ -147,6 +150,7 @@ class BearingResults:
         out = {"traction": both("heat"), "rolling_resistance": both("rolling_loss"),
                "contact_damping": both("damping_loss"),
                "ball_drag": zero if self.drag_loss is None else self.drag_loss,
+               "jet_momentum": zero if self.jet_loss is None else self.jet_loss,
                "cage": (zero if self.cage_loss is None else self.cage_loss)
                + (zero if self.land_loss is None else self.land_loss)}
         out["total"] = sum(out.values())
@@ -200,7 +204,8 @@ def compute_results(handle, time, q, q_t, chunk: int = 256) -> BearingResults:
                           out["kin"], kin_slip, out["psi"], out["orbit"], out["w_orb"], out["byz"], out["bxz"],
                           out["inner"], out["outer"], out["inner_race_force"], out["inner_moment"],
                           out["outer_race_force"], out["cage_eccentricity"], out["land_force"], mu_max, warning,
-                          out["outer_moment"], out["drag_loss"], out["cage_loss"], out["land_loss"], out["land_drive"])
+                          out["outer_moment"], out["drag_loss"], out["cage_loss"], out["land_loss"], out["land_drive"],
+                          out["jet_loss"])
 
 
 def _chunks(handle, time, chunk):
@@ -261,6 +266,9 @@ def _outputs(con, time, q, q_t) -> dict:
            "land_force": np.zeros(b) if s.cage_land_force is None else np.linalg.norm(s.cage_land_force, axis=-1),
            "land_drive": s.land_drive_power}
     out["drag_loss"], out["cage_loss"], out["land_loss"] = body_losses(s)
+    # the drag force holds the sphere's and the jet's parts: the jet's apart (zero without one)
+    out["jet_loss"] = jet_losses(s, con.axis, con.origin, con.cage_record.drag_linear)
+    out["drag_loss"] = out["drag_loss"] - out["jet_loss"]
     # the nominal cage speed with the sizes these states ran with (a run's temperatures grow them)
     out["nominal"] = np.array([con.bearing.cage_speed(wi, wo) for wi, wo in zip(w_i, w_o)])
     for race, kin, f in (("inner", s.inner, s.inner_forces), ("outer", s.outer, s.outer_forces)):
@@ -277,6 +285,18 @@ def _outputs(con, time, q, q_t) -> dict:
             c[name] = np.zeros((b, z)) if getattr(f, name) is None else getattr(f, name)
         out[race] = {name: np.asarray(c[name], dtype=float) for name in _CONTACT_FIELDS}
     return out
+
+
+def jet_losses(s, axis, origin, factor) -> np.ndarray:
+    """The jet oil's momentum loss of B states (a batched :class:`ConnectorState`), (B,) W:
+    Σ_j k v_j², v_j each ball's speed along its orbit about ``axis`` through ``origin`` and k
+    the jet's ``factor`` (kg/s; MODEL.md eq. 11c.2), as the drag force takes it
+    (:func:`contact.cage.drag_forces`); zeros for k = 0."""
+    if factor == 0:
+        return np.zeros(s.ball_position.shape[0])
+    e_psi = cross(axis, s.ball_position - origin)
+    e_psi /= np.linalg.norm(e_psi, axis=-1, keepdims=True)
+    return factor * np.sum(np.einsum("bjk,bjk->bj", s.ball_velocity, e_psi) ** 2, axis=1)
 
 
 def body_losses(s) -> tuple:

@@ -24,7 +24,8 @@ def azimuth_losses(balance, x) -> dict:
     """Losses of the whole bearing in the quasi-dynamic state ``x`` (scaled unknowns) of
     ``balance`` (:class:`~exudyn_bearing.solvers.azimuth_balance._Balance`), W, by place as
     :data:`contact.bearing_thermal.HEAT_SPLIT` names them: each race's contacts (traction and
-    spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b), ``ball_drag`` (§11c), the guiding
+    spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b), ``ball_drag`` (§11c), ``jet_momentum``
+    (eq. 11c.2), the guiding
     race's land (K Δω², §11d; the race turning at the land's speed, as
     :func:`~exudyn_bearing.solvers.steady_power.steady_losses` names it) and ``pockets``
     (none: the balls orbit with their pockets, which have no friction in this balance)."""
@@ -36,8 +37,7 @@ def azimuth_losses(balance, x) -> dict:
     speed = np.abs(state["v"][:z, 1])  # about the bearing axis, as the drag acts (contact.cage.drag_forces)
     out["ball_drag"] = float(np.sum(0.5 * balance.c_d * balance.density * np.pi * balance.b.ball_radius ** 2
                                     * speed ** 3))
-    if balance.drag_linear > 0:  # the jet oil's momentum, eq. 11c.2
-        out["ball_drag"] += float(np.sum(balance.drag_linear * speed ** 2))
+    out["jet_momentum"] = float(np.sum(balance.drag_linear * speed ** 2))  # eq. 11c.2 (0 without a jet)
     k_land, w_land = balance.land
     outer = w_land == balance.race_omega[z, 2]
     out["land_outer" if outer else "land_inner"] = float(k_land * (w_land - state["w_c"]) ** 2)

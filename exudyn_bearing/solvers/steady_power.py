@@ -19,7 +19,7 @@ def steady_losses(solved) -> dict:
     """Losses of the whole bearing in the steady state ``solved``
     (:class:`~exudyn_bearing.solvers.steady.Solved`), W, by place: ``inner_contacts`` and
     ``outer_contacts`` (traction and spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b),
-    ``ball_drag`` (§11c), ``land_outer``/``land_inner`` (the centred land's shear,
+    ``ball_drag`` (§11c, eq. 11c.1), ``jet_momentum`` (eq. 11c.2), ``land_outer``/``land_inner`` (the centred land's shear,
     K Δω², §11d) and ``pockets`` (their friction, §11d)."""
     ball, b = solved.ball, solved.ball.b
     w_c, w_b, c, _ = ball.unpack(solved.x)
@@ -29,8 +29,7 @@ def steady_losses(solved) -> dict:
            "rolling_resistance": z * float(np.sum(f.rolling_loss)) if f.rolling_loss is not None else 0.0}
     v = w_c * c[0]
     out["ball_drag"] = z * 0.5 * ball.c_d * ball.density * np.pi * b.ball_radius ** 2 * abs(v) ** 3
-    if ball.drag_linear > 0:  # the jet oil's momentum, eq. 11c.2
-        out["ball_drag"] += z * ball.drag_linear * v ** 2
+    out["jet_momentum"] = z * ball.drag_linear * v ** 2  # eq. 11c.2 (0 without a jet)
     k_land, w_land = ball.land
     guidance = "land_outer" if w_land == solved.w_o else "land_inner"
     out[guidance] = k_land * (w_land - w_c) ** 2
@@ -59,9 +58,10 @@ def steady_drive_power(solved) -> float:
 
 def by_source(losses: dict) -> dict:
     """The places of :func:`steady_losses` summed by the sources of the dynamic results'
-    ``power_loss_W`` (traction, rolling_resistance, ball_drag, cage, total), W."""
+    ``power_loss_W`` (traction, rolling_resistance, ball_drag, jet_momentum, cage, total), W."""
     out = {"traction": losses["inner_contacts"] + losses["outer_contacts"],
            "rolling_resistance": losses["rolling_resistance"], "ball_drag": losses["ball_drag"],
+           "jet_momentum": losses.get("jet_momentum", 0.0),
            "cage": losses.get("land_outer", 0.0) + losses.get("land_inner", 0.0) + losses["pockets"]}
     out["total"] = sum(out.values())
     return {k: float(v) for k, v in out.items()}

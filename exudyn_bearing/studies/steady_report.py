@@ -67,7 +67,8 @@ def _print_heat(state) -> None:
     where it has them, and its wall time."""
     loss = state.power_loss_W
     print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
-          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}, cage {loss['cage']:.1f}); "
+          f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}"
+          + (f", jet {loss['jet_momentum']:.1f}" if loss.get("jet_momentum") else "") + f", cage {loss['cage']:.1f}); "
           f"drive {state.drive_power_W:.1f} W")
     if state.thermal is not None and "heat_W" in state.thermal:
         _print_temperatures(state.thermal)
