@@ -185,3 +185,37 @@ def test_a_bearing_with_a_defect_starts_from_its_perfect_twins_thermal_state(rad
         assert h.temperatures.start_temperatures[node] == pytest.approx(perfect.thermal["temperatures_K"][node],
                                                                         abs=1e-9)
     assert h.connector.surface is not None and h.connector.surface.defects
+
+
+def test_a_clearance_that_turns_with_temperature_is_followed_from_the_last_iterate():
+    """The CWRU 6205 (zero clearance) at 1 kN radial: its clearance turns with each kelvin, so
+    Newton from the last iterate's balance fails at the next iterate's sizes. The continuation
+    from that balance's sizes and oils to the new ones (``near``) finds the same fixed point as
+    the continuation from the seed's steady state (cage speed within 1e-7 relative, nodes
+    within 1e-5 K) with one cold continuation instead of two."""
+    from unittest import mock
+
+    from exudyn_bearing import CWRU_6205_BEARING
+    from exudyn_bearing.solvers import quasidynamic
+
+    setup = BearingSetup(CWRU_6205_BEARING).replace(thermal=ThermalModel())
+    load = dict(axial_force=0.0, radial_force=1000.0, rpm=1800.0)
+    cold, solve = [], quasidynamic.solve_combined
+
+    def counting(*args, **kwargs):
+        if kwargs.get("warm") is None:
+            cold.append(1)
+        return solve(*args, **kwargs)
+
+    with mock.patch.object(quasidynamic, "solve_combined", counting):
+        followed = combined_load_state(setup, **load)
+    assert followed.converged and len(cold) == 1
+    def refused(make, setup_, load_, warm, *args):  # as before: a failed Newton goes back to the seed
+        return warm, 1.0, "not followed", make(load_)
+
+    with mock.patch.object(quasidynamic, "_continue_from_near", refused):
+        restarted = combined_load_state(setup, **load)
+    assert restarted.converged
+    assert followed.cage_speed == pytest.approx(restarted.cage_speed, rel=1e-7)
+    for node, value in restarted.thermal["temperatures_K"].items():
+        assert followed.thermal["temperatures_K"][node] == pytest.approx(value, abs=1e-5)

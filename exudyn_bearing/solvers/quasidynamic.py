@@ -180,14 +180,16 @@ def combined_load_state(bearing, lubricant=FROM_SETUP, *, axial_force: float, ra
 
 
 def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, steady, tol, start, max_steps=None,
-                   max_step=None, oils=None, warm=None) -> tuple:
+                   max_step=None, oils=None, warm=None, near=None) -> tuple:
     """(:class:`AzimuthStates`, the last balance, its scaled unknowns, the unscaled unknowns of
     its centred cage) of :func:`combined_load_state` (checked inputs; ``cage`` None: no cage)
     from the seed's axial ``steady`` state; ``oils`` (inner contacts', outer contacts', land's
     lubricant) where they differ from the setup's (the thermal network's, MODEL.md §14b).
     ``warm``: instead, Newton at the load from these unknowns of a centred cage (a nearby
     balance's, e.g. the thermal fixed point's last iterate) and the cage seated from there;
-    not converged where that Newton fails (``steady`` is then not used)."""
+    where it fails and ``near`` gives that balance's (bearing, oils), a continuation from them
+    to these (each size and oil property along the straight line, :func:`_blend`); not
+    converged where that fails too (``steady`` is then not used)."""
     bearing, lubricant, ball_drag, contact_law = setup.bearing, setup.lubricant, setup.drag, setup.contact_law
     seed = seed_axial_load(axial_force, radial_force)
     law, w_i, w_o, land = _balance_inputs(bearing, lubricant if oils is None else oils[2], contact_law, cage, rpm,
@@ -200,6 +202,9 @@ def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, st
         x, worst, _ = damped_newton(balance.residual, warm / balance.scale, *balance.bounds(), tol, balance.jacobian,
                                     max_iterations=STEP_JACOBIANS, reuse_jacobian=True)
         y, message = x * balance.scale, None if worst <= tol else f"Newton from the nearby balance: {worst:.2g}"
+        if message is not None and near is not None:
+            y, worst, message, balance = _continue_from_near(make, setup, load, warm, near, oils, cage, rpm, outer_rpm,
+                                                             tol)
     else:
         y = _steady_unknowns(bearing, steady)
         max_step = max_step(steady) if callable(max_step) else max_step
@@ -219,6 +224,45 @@ def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, st
     return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale, centred
 
 
+def _continue_from_near(make, setup, load, warm, near, oils, cage, rpm, outer_rpm, tol) -> tuple:
+    """(unscaled unknowns, worst residual, None or why not, the last balance) of the
+    continuation from the ``warm`` unknowns of a centred cage at the nearby balance's
+    (bearing, oils) ``near`` to ``setup``'s bearing and ``oils`` at ``load``: the path's points
+    blend every size and oil property linearly (its end is ``make(load)`` itself). A
+    zero-clearance bearing whose clearance turns with each kelvin needs it where Newton from
+    the nearby balance fails (the CWRU 6205 under radial load, MODEL.md §14d)."""
+    near_bearing, near_oils = near
+
+    def blended(point):
+        s = float(point[0])
+        if s >= 1.0:
+            return make(load)
+        bearing = _blend(near_bearing, setup.bearing, s)
+        blend_oils = tuple(_blend(p, q, s) for p, q in zip(near_oils, oils))
+        law, w_i, w_o, land = _balance_inputs(bearing, blend_oils[2], setup.contact_law, cage, rpm, outer_rpm)
+        return _Balance(bearing, setup.lubricant, w_i, w_o, setup.drag, law, land, *load, oils=blend_oils)
+
+    y, worst, message, balance, _ = continue_path(blended, warm, (0.0,), (1.0,), NEAR_STEP, tol, None,
+                                                  lambda p: f"{100 * float(p[0]):.0f} % of the way from the nearby "
+                                                            "balance's sizes and oils")
+    return y, worst, message, balance
+
+
+#: the continuation from a nearby balance's sizes and oils: its largest step, a share of the way
+NEAR_STEP = 0.25
+
+
+def _blend(a, b, s: float):
+    """The dataclass ``b`` with each float field moved back towards ``a``'s by 1 − ``s``:
+    a + s (b − a) (fields that are not floats, or equal, are ``b``'s)."""
+    changes = {}
+    for f in fields(b):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, float) and isinstance(y, float) and x != y:
+            changes[f.name] = x + s * (y - x)
+    return replace(b, **changes) if changes else b
+
+
 def _thermal_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, tol, max_steps, max_step, start):
     """:func:`combined_load_state` of a ``setup`` with a ``thermal`` model: the balance and the
     network iterated to a fixed point (:func:`~exudyn_bearing.solvers.thermal.fixed_point`,
@@ -233,7 +277,7 @@ def _thermal_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm,
                   start=start, max_steps=max_steps, max_step=max_step, oils=oils)
         found = None
         if "centred" in last:
-            found = solve_combined(running, cage, steady=None, warm=last["centred"], **kw)
+            found = solve_combined(running, cage, steady=None, warm=last["centred"], near=last["near"], **kw)
         if found is None or not found[0].converged:
             inner, outer, land = oils
             solved = solve_steady(running.replace(cage=CageModel() if cage is None else cage), seed, rpm, outer_rpm,
@@ -242,6 +286,7 @@ def _thermal_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm,
                 return FixedPointPass(None, f"the axial steady state at {seed:g} N: {solved.message}", None, None)
             found = solve_combined(running, cage, steady=steady_result(solved, 0.0, {}), **kw)
         states, balance, x, last["centred"] = found
+        last["near"] = (running.bearing, oils)
         if not states.converged:
             return FixedPointPass(states, states.message, None, None)
         return FixedPointPass(states, None, azimuth_losses(balance, x), azimuth_operating_point(balance, x))
