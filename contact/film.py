@@ -10,7 +10,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .elementwise import apply
+from .elementwise import apply, at
 
 __all__ = ["central_film", "central_film_thickness", "minimum_film_thickness"]
 
@@ -29,8 +29,8 @@ def central_film(speed, load, r_x, ellipticity, e_prime, viscosity, pressure_vis
 @njit(cache=True, error_model="numpy")
 def _central_film(out, speed, load, r_x, ellipticity, e_prime, viscosity, pressure_viscosity):
     for i in range(out.size):
-        out[i] = central_film(speed[i], load[i], r_x[i], ellipticity[i], e_prime[i], viscosity[i],
-                              pressure_viscosity[i])
+        out[i] = central_film(at(speed, i), at(load, i), at(r_x, i), at(ellipticity, i), at(e_prime, i),
+                              at(viscosity, i), at(pressure_viscosity, i))
 
 
 def _dimensionless(entrainment_speed, load, r_x, e_prime, lubricant):

@@ -20,7 +20,7 @@ import numpy as np
 from numba import njit
 from scipy import optimize, special
 
-from .elementwise import apply
+from .elementwise import apply, at
 
 __all__ = [
     "effective_modulus", "brewe_hamrock", "exact_ellipticity", "HertzContact",
@@ -99,19 +99,21 @@ def _fits(out_k, out_first, out_second, ratio):
 @njit(cache=True, error_model="numpy")
 def _stiffness(out, ellipticity, first, second, radius, e_prime):
     for i in range(out.size):
-        out[i] = stiffness_of(ellipticity[i], first[i], second[i], radius[i], e_prime[i])
+        out[i] = stiffness_of(at(ellipticity, i), at(first, i), at(second, i), at(radius, i), at(e_prime, i))
 
 
 @njit(cache=True, error_model="numpy")
-def _semi_axis(out, load, ellipticity, second, radius, e_prime, transverse):
-    for i in range(out.size):
-        out[i] = semi_axis_of(load[i], ellipticity[i], second[i], radius[i], e_prime[i], transverse)
+def _semi_axes(out_a, out_b, load, ellipticity, second, radius, e_prime):
+    for i in range(out_a.size):
+        q, k, e, r, ep = at(load, i), at(ellipticity, i), at(second, i), at(radius, i), at(e_prime, i)
+        out_a[i] = semi_axis_of(q, k, e, r, ep, True)
+        out_b[i] = semi_axis_of(q, k, e, r, ep, False)
 
 
 @njit(cache=True, error_model="numpy")
 def _max_pressure(out, load, a, b):
     for i in range(out.size):
-        out[i] = max_pressure_of(load[i], a[i], b[i])
+        out[i] = max_pressure_of(at(load, i), at(a, i), at(b, i))
 
 
 def brewe_hamrock(radius_ratio):
@@ -210,7 +212,7 @@ class HertzContact:
         """Semi-axes (a transverse, b rolling), m, for load Q (MODEL.md §3)."""
         load = np.maximum(np.asarray(load, dtype=float), 0.0)
         parts = (load, self.ellipticity, self.second_integral, self.curvature_radius, self.effective_modulus)
-        return apply(_semi_axis, *parts, flags=(True,)), apply(_semi_axis, *parts, flags=(False,))
+        return apply(_semi_axes, *parts, outputs=2)
 
     def max_pressure(self, load):
         """Peak pressure p_max = 3Q / (2 pi a b), Pa; 0 for an unloaded contact."""

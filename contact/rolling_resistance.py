@@ -10,7 +10,7 @@ import math
 
 from numba import njit
 
-from .elementwise import apply
+from .elementwise import apply, at
 from .hertz import fit_second_integral
 
 __all__ = ["hydrodynamic_rolling_force", "rolling_resistance_force", "rolling_resistance_moment",
@@ -64,20 +64,20 @@ def rolling_loads(force, r_x, ball_radius, rolling_rate):
 @njit(cache=True, error_model="numpy")
 def _hydrodynamic_forces(out, load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width, film_factor):
     for i in range(out.size):
-        out[i] = hydrodynamic_force(load[i], entrainment[i], r_x[i], r_y[i], a[i], b[i], e_prime[i], viscosity[i],
-                                    width[i], film_factor[i])
+        out[i] = hydrodynamic_force(at(load, i), at(entrainment, i), at(r_x, i), at(r_y, i), at(a, i), at(b, i),
+                                    at(e_prime, i), at(viscosity, i), at(width, i), at(film_factor, i))
 
 
 @njit(cache=True, error_model="numpy")
 def _couples(out, force, r_x, rolling_rate):
     for i in range(out.size):
-        out[i] = rolling_loads(force[i], r_x[i], 1.0, rolling_rate[i])[0]
+        out[i] = rolling_loads(at(force, i), at(r_x, i), 1.0, at(rolling_rate, i))[0]
 
 
 @njit(cache=True, error_model="numpy")
 def _pushes(out, force, r_x, ball_radius, rolling_rate):
     for i in range(out.size):
-        out[i] = rolling_loads(force[i], r_x[i], ball_radius[i], rolling_rate[i])[1]
+        out[i] = rolling_loads(at(force, i), at(r_x, i), at(ball_radius, i), at(rolling_rate, i))[1]
 
 
 def hydrodynamic_rolling_force(load, entrainment, r_x, r_y, a, b, e_prime, viscosity, width=None):

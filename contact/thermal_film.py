@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .elementwise import apply
+from .elementwise import apply, at
 
 __all__ = ["thermal_film_factor", "film_factor"]
 
@@ -38,7 +38,8 @@ def film_factor(entrainment, slip, max_pressure, e_prime, viscosity, heating, fl
 @njit(cache=True, error_model="numpy")
 def _film_factors(out, entrainment, slip, max_pressure, e_prime, viscosity, heating, floor):
     for i in range(out.size):
-        out[i] = film_factor(entrainment[i], slip[i], max_pressure[i], e_prime[i], viscosity[i], heating[i], floor[i])
+        out[i] = film_factor(at(entrainment, i), at(slip, i), at(max_pressure, i), at(e_prime, i), at(viscosity, i),
+                             at(heating, i), at(floor, i))
 
 
 def thermal_film_factor(entrainment, slip, max_pressure, e_prime, viscosity, temperature_viscosity,

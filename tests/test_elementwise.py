@@ -29,7 +29,22 @@ def test_apply_is_the_scalar_law_over_the_broadcast_shape(load, a, b):
     assert np.array_equal(np.ravel(got), expected)
 
 
-def test_a_flag_passes_unbroadcast():
+def test_two_outputs_and_a_flag():
+    """A loop with two outputs (the semi-axes, a/b = k) and one with a flag passed as it is
+    (:func:`contact.rolling_resistance` pushes through a plain float)."""
     parts = (np.array([10.0, 20.0]), 2.0, 1.0, 0.01, 2.3e11)
-    a, b = apply(hertz._semi_axis, *parts, flags=(True,)), apply(hertz._semi_axis, *parts, flags=(False,))
-    assert np.allclose(a / b, 2.0, rtol=1e-14)  # a/b = k
+    a, b = apply(hertz._semi_axes, *parts, outputs=2)
+    assert a.shape == b.shape == (2,) and np.allclose(a / b, 2.0, rtol=1e-14)
+    assert np.array_equal(a, [hertz.semi_axis_of(q, 2.0, 1.0, 0.01, 2.3e11, True) for q in parts[0]])
+
+
+def test_read_only_and_true_broadcasts():
+    """A read-only input (a caller's broadcast view) and a (2, 1) against a (3,) input give the
+    ufunc's (2, 3) result."""
+    load = np.broadcast_to(np.array([100.0, 50.0, 0.0]), (3,))
+    assert not load.flags.writeable
+    got = apply(hertz._max_pressure, np.array([[100.0], [50.0]]), load * 0 + 1e-3, 2e-4)
+    assert got.shape == (2, 3)
+    assert np.array_equal(got[:, 0], [1.5 * q / (math.pi * 1e-3 * 2e-4) for q in (100.0, 50.0)])
+    assert np.array_equal(apply(hertz._max_pressure, load, 1e-3, 2e-4)[:2],
+                          [1.5 * q / (math.pi * 1e-3 * 2e-4) for q in (100.0, 50.0)])
