@@ -87,11 +87,15 @@ class AzimuthStates:
     #: the mean over the balls of the cage slip against each ball's own pure-rolling orbital
     #: speed (MODEL.md §7, the dynamic results' skid measure), %
     kinematic_cage_slip_percent: float | None = None
-    #: losses by source (traction, rolling_resistance, ball_drag, cage, total), W, and the power
-    #: the races' drives put in, W (equal but for the contacts' normal work, 1e-4–1e-3 of
-    #: them; :mod:`.azimuth_power`)
+    #: losses by source (traction, rolling_resistance, ball_drag, jet_momentum, cage, total), W,
+    #: and the power the races' drives put in, W: the losses less ``normal_work_W``
+    #: (:mod:`.azimuth_power`)
     power_loss_W: dict | None = None
     drive_power_W: float | None = None
+    #: Σ Q ṗ, W: the contacts' loads times their approach rates in this balance's kinematics
+    #: (each ball at ω_c about the cage centre, not along its orbit's radial changes;
+    #: 1e-4–1e-3 of the losses, MODEL.md §14d)
+    normal_work_W: float | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready: the fields (arrays as lists) and ``units`` (the unit of every key)."""
@@ -324,6 +328,7 @@ def _states(balance, y, worst, converged, message, start, tilt=(0.0, 0.0)) -> Az
                    nominal_cage_speed=nominal, cage_slip_percent=float(cage_slip(nominal, w_c)),
                    kinematic_cage_slip_percent=float(np.mean(cage_slip(w_kin, w_c))),
                    power_loss_W=by_source(azimuth_losses(balance, x)), drive_power_W=azimuth_drive_power(balance, x),
+                   normal_work_W=float(np.sum(np.sum(f.force * kin.normal, axis=1) * kin.penetration_rate)),
                    wall_time_s=_time.perf_counter() - start)
 
 

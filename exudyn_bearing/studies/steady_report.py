@@ -69,7 +69,9 @@ def _print_heat(state) -> None:
     print(f"  power loss                          {loss['total']:8.1f} W (traction {loss['traction']:.1f}, rolling "
           f"resistance {loss['rolling_resistance']:.1f}, drag {loss['ball_drag']:.1f}"
           + (f", jet {loss['jet_momentum']:.1f}" if loss.get("jet_momentum") else "") + f", cage {loss['cage']:.1f}); "
-          f"drive {state.drive_power_W:.1f} W")
+          f"drive {state.drive_power_W:.1f} W"
+          + (f" (the losses less the contacts' normal work {state.normal_work_W:.3g} W of the balance's kinematics)"
+             if getattr(state, "normal_work_W", None) else ""))
     if state.thermal is not None and "heat_W" in state.thermal:
         _print_temperatures(state.thermal)
     print(f"  wall time {state.wall_time_s:.2f} s")
