@@ -1,8 +1,8 @@
 """Hydrodynamic (EHL) rolling resistance of a ball–race contact (MODEL.md §11b; beyond the paper).
 
 A per-contact term (:mod:`contact.terms`), written once as scalar numba functions that the
-compiled kernels call per contact and numpy calls element by element (the array functions below, :mod:`contact.elementwise`);
-switched on by :class:`contact.ballrace.ContactLaw` (``rolling_resistance``).
+compiled kernels call per contact and the array functions below apply element by element
+(:mod:`contact.elementwise`); switched on by :class:`contact.ballrace.ContactLaw` (``rolling_resistance``).
 """
 from __future__ import annotations
 

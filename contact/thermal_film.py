@@ -1,9 +1,9 @@
 """Inlet shear heating: the thermal reduction of the EHD film at speed (MODEL.md §11e; beyond
 the paper). A per-contact term (:mod:`contact.terms`), written once as a scalar numba
-function that the compiled kernels call per contact and the array function applies element by element (:mod:`contact.elementwise`)."""
+function that the compiled kernels call per contact and the array function applies element
+by element (:mod:`contact.elementwise`)."""
 from __future__ import annotations
 
-import numpy as np
 from numba import njit
 
 from .elementwise import apply, at

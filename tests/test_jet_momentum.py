@@ -134,10 +134,11 @@ def test_the_bearing_file_carries_the_jet():
 
 
 def test_the_cli_runs_a_jet_bearing_file_with_and_without_the_network(tmp_path):
-    """The CLI door: ``steady --bearing`` of a file with ``[drag] oil_flow`` pays the jet
-    (its jet's loss within 2e-3 of Euler's power at its cage speed, its sphere drag that of
-    the same file's without, 1e-3 after the cage speed's change); ``--thermal`` on a file without ``[thermal]`` takes the jet's flow for the network
-    (one oil) instead of stopping on two flows; the JSON records the flow."""
+    """The CLI door: ``steady --bearing`` of a file with ``[drag] oil_flow`` pays the jet (its
+    loss within 2e-3 of Euler's power at its cage speed, its sphere drag that of the same file
+    without, 1e-3 after the cage speed's change); ``--thermal`` on a file without ``[thermal]``
+    takes the jet's flow for the network (one oil) instead of stopping on two flows; the JSON
+    records the flow."""
     from tests.test_cli import cli_json
 
     setup = BearingSetup(HIGH_SPEED_35MM_BEARING, ESTER_TURBINE_OIL, dataclasses.replace(HIGH_SPEED_DRAG,

@@ -81,8 +81,9 @@ def pocket_friction(cage_force, balls, cage, ball_radius, mu, slip_scale, fricti
 @njit(cache=True, error_model="numpy")
 def cage_and_drag(c, v, params, cage, cage_force, drag_force):
     """Cage forces (``params.kind`` 1: rigid cage pockets, MODEL.md §1; 2: spring chain
-    P9/P10; 0: none) and drag forces (MODEL.md §8, §11c: ``params.drag_factor`` = 1/2 C_D rho pi r²
-    and the jet momentum's ``params.drag_linear`` k, 0: none) on the balls of B states (centres ``c`` m, velocities ``v`` m/s, (B, Z, 3)), as
+    P9/P10; 0: none) and drag forces (MODEL.md §8, §11c: ``params.drag_factor`` = 1/2 C_D rho pi
+    r² and the jet momentum's ``params.drag_linear`` k, 0: none) on the balls of B states
+    (centres ``c`` m, velocities ``v`` m/s, (B, Z, 3)), as
     :mod:`contact.cage`; ``params`` a :class:`~contact.kernels.records.CageRecord`, ``cage``
     the cage body's :class:`~contact.kernels.records.BodyStates`; written into
     ``cage_force``, ``drag_force`` (B, Z, 3)."""

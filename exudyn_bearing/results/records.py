@@ -30,9 +30,8 @@ UNITS = {
 }
 
 #: unit suffixes of result names
-SUFFIXES = {"_percent": "%", "_deg": "deg", "_Pa_s": "Pa s", "_W_per_K": "W/K", "_m3_s": "m^3/s", "_us": "us", "_ms": "ms",
-            "_s": "s",
-            "_W": "W", "_K": "K", "_m": "m"}
+SUFFIXES = {"_percent": "%", "_deg": "deg", "_Pa_s": "Pa s", "_W_per_K": "W/K", "_m3_s": "m^3/s", "_us": "us",
+            "_ms": "ms", "_s": "s", "_W": "W", "_K": "K", "_m": "m"}
 
 
 def unit_of(name: str) -> str:

@@ -19,8 +19,8 @@ def steady_losses(solved) -> dict:
     """Losses of the whole bearing in the steady state ``solved``
     (:class:`~exudyn_bearing.solvers.steady.Solved`), W, by place: ``inner_contacts`` and
     ``outer_contacts`` (traction and spin, ∫ τ·u, §11a), ``rolling_resistance`` (§11b),
-    ``ball_drag`` (§11c, eq. 11c.1), ``jet_momentum`` (eq. 11c.2), ``land_outer``/``land_inner`` (the centred land's shear,
-    K Δω², §11d) and ``pockets`` (their friction, §11d)."""
+    ``ball_drag`` (§11c, eq. 11c.1), ``jet_momentum`` (eq. 11c.2), ``land_outer``/``land_inner``
+    (the centred land's shear, K Δω², §11d) and ``pockets`` (their friction, §11d)."""
     ball, b = solved.ball, solved.ball.b
     w_c, w_b, c, _ = ball.unpack(solved.x)
     _, f = ball.contacts(solved.x)

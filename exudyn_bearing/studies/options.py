@@ -90,7 +90,8 @@ def _simulate_options(p) -> None:
                    help="traction quadrature order (default: the bearing file's [contact_law], else "
                         f"{ContactLawDefaults.quadrature_order})")
     _traction_option(p)
-    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off (with the jet oil's momentum, [drag] oil_flow)")
+    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off (with the jet oil's momentum, "
+                   "[drag] oil_flow)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.add_argument("--error-estimate", action="store_true",
                    help="repeat at half the step and report the differences as an error estimate")
@@ -113,7 +114,8 @@ def _steady_options(p) -> None:
     p.add_argument("--rpm", type=float, default=1800.0, help="inner-race speed, rev/min (outer race fixed)")
     p.add_argument("--bearing", help="bearing TOML file (default: the reference bearing)")
     _traction_option(p)
-    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off (with the jet oil's momentum, [drag] oil_flow)")
+    p.add_argument("--no-drag", action="store_true", help="switch the ball drag off (with the jet oil's momentum, "
+                   "[drag] oil_flow)")
     p.add_argument("--thermal", action="store_true",
                    help="solve the thermal network with the state (MODEL.md §14): the bearing file's [thermal], "
                         "else its defaults; a file with [thermal] solves it without this flag")
