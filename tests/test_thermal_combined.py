@@ -210,7 +210,7 @@ def test_a_clearance_that_turns_with_temperature_is_followed_from_the_last_itera
     with mock.patch.object(quasidynamic, "solve_combined", counting):
         followed = combined_load_state(setup, **load)
     assert followed.converged and len(cold) == 1
-    def refused(make, setup_, load_, warm, *args):  # as before: a failed Newton goes back to the seed
+    def refused(make, load_, warm, **kwargs):  # as before: a failed Newton goes back to the seed
         return warm, 1.0, "not followed", make(load_)
 
     with mock.patch.object(quasidynamic, "_continue_from_near", refused):

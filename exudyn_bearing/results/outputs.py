@@ -10,6 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from contact.cage import drag_forces
 from contact.kinematics import cross, rolling_cage_speed
 from ..errors import TractionCoefficientWarning
 
@@ -290,13 +291,12 @@ def _outputs(con, time, q, q_t) -> dict:
 def jet_losses(s, axis, origin, factor) -> np.ndarray:
     """The jet oil's momentum loss of B states (a batched :class:`ConnectorState`), (B,) W:
     Σ_j k v_j², v_j each ball's speed along its orbit about ``axis`` through ``origin`` and k
-    the jet's ``factor`` (kg/s; MODEL.md eq. 11c.2), as the drag force takes it
-    (:func:`contact.cage.drag_forces`); zeros for k = 0."""
+    the jet's ``factor`` (kg/s; MODEL.md eq. 11c.2): minus the power of the drag law's jet
+    part alone (:func:`contact.cage.drag_forces`); zeros for k = 0."""
     if factor == 0:
         return np.zeros(s.ball_position.shape[0])
-    e_psi = cross(axis, s.ball_position - origin)
-    e_psi /= np.linalg.norm(e_psi, axis=-1, keepdims=True)
-    return factor * np.sum(np.einsum("bjk,bjk->bj", s.ball_velocity, e_psi) ** 2, axis=1)
+    force = drag_forces(s.ball_position, s.ball_velocity, axis, origin, 0.0, 0.0, 0.0, linear=factor)
+    return -np.sum(force * s.ball_velocity, axis=(1, 2))
 
 
 def body_losses(s) -> tuple:

@@ -207,8 +207,8 @@ def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, st
                                     max_iterations=STEP_JACOBIANS, reuse_jacobian=True)
         y, message = x * balance.scale, None if worst <= tol else f"Newton from the nearby balance: {worst:.2g}"
         if message is not None and near is not None:
-            y, worst, message, balance = _continue_from_near(make, setup, load, warm, near, oils, cage, rpm, outer_rpm,
-                                                             tol)
+            y, worst, message, balance = _continue_from_near(make, load, warm, setup=setup, near=near, oils=oils,
+                                                             cage=cage, rpm=rpm, outer_rpm=outer_rpm, tol=tol)
     else:
         y = _steady_unknowns(bearing, steady)
         max_step = max_step(steady) if callable(max_step) else max_step
@@ -228,7 +228,7 @@ def solve_combined(setup, cage, *, axial_force, radial_force, rpm, outer_rpm, st
     return _states(balance, y, worst, converged, message or "converged", start), balance, y / balance.scale, centred
 
 
-def _continue_from_near(make, setup, load, warm, near, oils, cage, rpm, outer_rpm, tol) -> tuple:
+def _continue_from_near(make, load, warm, *, setup, near, oils, cage, rpm, outer_rpm, tol) -> tuple:
     """(unscaled unknowns, worst residual, None or why not, the last balance) of the
     continuation from the ``warm`` unknowns of a centred cage at the nearby balance's
     (bearing, oils) ``near`` to ``setup``'s bearing and ``oils`` at ``load``: the path's points
