@@ -214,7 +214,7 @@ class ContactForces:
 
 def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lubricant,
                      law: ContactLaw = ContactLaw(), terms: TermRecord | None = None,
-                     compiled: bool = False) -> ContactForces:
+                     compiled: bool = False, known_traction: np.ndarray | None = None) -> ContactForces:
     """Forces of n ball–race contacts from their kinematics (MODEL.md §3, §5, §6).
 
     Normal: Q = K delta^(3/2) + c d(delta)/dt, c = 2 zeta sqrt(1.5 K delta^(1/2) m),
@@ -225,7 +225,9 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
     caller's :func:`exudyn_bearing.contact_records.contact_records`; built here if None).
     ``compiled``: a Crook law's traction by the compiled fast rule
     (:func:`contact.kernels.crook.crook_law`; the same rule, ~20x cheaper for many contacts)
-    where the law uses the fast rule, else by its numpy form.
+    where the law uses the fast rule, else by its numpy form. ``known_traction`` (n, 4): where
+    a row is not NaN, that compiled rule's f_x, f_y (N), M_z (N m) and heat (W) of the contact
+    as already computed (a run's own, exudyn_bearing.model.recorded_traction), taken as they are.
     """
     n_con = kin.penetration.shape[0]
     r_x, contact = params.hertz(kin.contact_angle, law.hertz_method)
@@ -285,11 +287,19 @@ def ball_race_forces(kin: ContactKinematics, params: RaceContact, lubricant: Lub
             from .kernels.crook import crook_law  # the same fast rule, compiled
 
             evaluate = crook_law
-        tr = evaluate((kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx]), a, b, p_traction,
-                      load[idx], h[idx], kin.entrainment[idx], lubricant, law)
-        fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
-        if law.spin_moment:
-            mz[idx] = tr.mz
+            if known_traction is not None:  # the contacts whose traction the run computed
+                done = idx[~np.isnan(known_traction[idx, 0])]
+                fx[done], fy[done], heat[done] = (known_traction[done, i] for i in (0, 1, 3))
+                if law.spin_moment:
+                    mz[done] = known_traction[done, 2]
+                rest = np.isnan(known_traction[idx, 0])
+                idx, a, b, p_traction = idx[rest], a[rest], b[rest], p_traction[rest]
+        if idx.size:
+            tr = evaluate((kin.slip_rolling[idx], kin.slip_transverse[idx], kin.spin[idx]), a, b, p_traction,
+                          load[idx], h[idx], kin.entrainment[idx], lubricant, law)
+            fx[idx], fy[idx], heat[idx] = tr.fx, tr.fy, tr.heat
+            if law.spin_moment:
+                mz[idx] = tr.mz
     force = -load[:, None] * kin.normal + (fx + rolling_push)[:, None] * kin.rolling + fy[:, None] * kin.transverse
     # lever arm p - c = r n: the normal force has no moment about the ball centre
     moment = 0.5 * params.ball_diameter * cross(kin.normal, force) + mz[:, None] * kin.normal
@@ -340,14 +350,16 @@ def _contacts_where(record, mask, n):
 
 
 def ball_race_forces_by_race(kin: ContactKinematics, params: RaceContact, lubricants: tuple, law: ContactLaw,
-                             terms: tuple, compiled: bool = False) -> ContactForces:
+                             terms: tuple, compiled: bool = False,
+                             known_traction: np.ndarray | None = None) -> ContactForces:
     """:func:`ball_race_forces` with each race's contacts (``params.race`` −1 inner, +1 outer)
     in its own oil: ``lubricants`` and ``terms`` (inner, outer), e.g. the thermal network's
     contact oils (MODEL.md §14b)."""
     n = kin.penetration.shape[0]
     inner = np.asarray(params.race) < 0
     parts = [(mask, ball_race_forces(_contacts_where(kin, mask, n), _contacts_where(params, mask, n), lub, law,
-                                     term, compiled=compiled))
+                                     term, compiled=compiled,
+                                     known_traction=None if known_traction is None else known_traction[mask]))
              for mask, lub, term in zip((inner, ~inner), lubricants, terms) if np.any(mask)]
     merged = {}
     for f in fields(ContactForces):

@@ -187,7 +187,7 @@ def test_barus_cap_compiled_kernel(exponent):
     compiled.race_contacts(compiled.BallStates(c[None], v[None], w[None], np.empty((1, 0, 3, 3))), compiled.RaceFrames(ro, rr, rv, rw),
                            geometry, (compiled.law_record(law, LUB),) * 2, compiled.crook_tables(law.quadrature_order),
                            term_record(law, LUB, B.ball_diameter),
-                           compiled.ContactOutputs(force, moment, penetration, load))
+                           compiled.ContactOutputs(force, moment, penetration, load, np.zeros((1, 2, z, 4))))
     np.testing.assert_allclose(load[0, 0], forces.normal_load, rtol=1e-12)
     assert np.all(load[0, 1] == 0.0)  # clear of the outer race
     f_in, m_in = force[0, 0], moment[0, 0]

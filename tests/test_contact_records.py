@@ -91,7 +91,7 @@ def test_threaded_contacts_equal_the_serial_kernel(every_term):
     frames = kernels.RaceFrames(w["ro"], w["rr"], w["rv"], w["rw"])
     balls = kernels.BallStates(*(np.ascontiguousarray(np.take(x, comp.balls, axis=1))
                                  for x in (states[0], states[2], states[3], states[1])))
-    shapes = [(b, 2, z, 3), (b, 2, z, 3), (b, 2, z), (b, 2, z)]
+    shapes = [(b, 2, z, 3), (b, 2, z, 3), (b, 2, z), (b, 2, z), (b, 2, z, 4)]
     serial = kernels.ContactOutputs(*(np.empty(s) for s in shapes))
     kernels.race_contacts(balls, frames, *comp.physics[:4], serial)
     for todo in (np.arange(b * 2 * z), np.arange(0, b * 2 * z, 3)):

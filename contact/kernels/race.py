@@ -170,7 +170,7 @@ def _normal_load(pen, rate, r_x, conformity, geometry, law):
 @njit(cache=True, error_model="numpy", inline="always")
 def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms):
     """(f_x, f_y along t1, t2 N, M_z N m, the per-contact terms' force along t1 N and couple
-    about t2 N m) on the ball of a loaded contact: Hamrock–Dowson film (P17) with the terms'
+    about t2 N m) on the ball of a loaded contact, and the traction's heat (W): Hamrock–Dowson film (P17) with the terms'
     film factor, the Crook traction by the fast rule, the terms' stage 2."""
     ell, second, radius, r_y = hertz
     u_x, u_y, spin = slip
@@ -186,11 +186,11 @@ def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, 
     heating = 8.0 * law.c1_coef if terms.heating > 0.0 else 0.0
     phi_t = film_factor(terms, cs, heating)  # the per-contact terms (contact.terms), stage 1
     h = max(phi_t * h, law.min_film)
-    fx, fy, mz, _ = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
+    fx, fy, mz, heat = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
     if not law.spin_moment:
         mz = 0.0
     f_b, m_r = contact_loads(terms, cs, phi_t)  # stage 2
-    return fx, fy, mz, f_b, m_r
+    return fx, fy, mz, f_b, m_r, heat
 
 
 @njit(cache=True, error_model="numpy")
@@ -209,11 +209,17 @@ def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out):
     fx = 0.0
     fy = 0.0
     mz = 0.0
+    heat = 0.0
     m_r = 0.0  # rolling-resistance couple about t2, on the ball
     f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if law.traction == 1 and q > 0.0:
-        fx, fy, mz, f_b, m_r = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin), entrainment,
+        fx, fy, mz, f_b, m_r, heat = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin), entrainment,
                                                  rolling_rate, geometry, law, tables, terms)
+    traction = out.traction
+    traction[ib, k, j, 0] = fx
+    traction[ib, k, j, 1] = fy
+    traction[ib, k, j, 2] = mz
+    traction[ib, k, j, 3] = heat
     nx, ny, nz = normal
     t1x, t1y, t1z = t1
     t2x, t2y, t2z = t2
@@ -269,7 +275,7 @@ def race_contacts(balls, frames, geometry, laws, tables, terms, out):
         The per-contact terms (surface, thermal film, rolling resistance).
     out : ContactOutputs
         Written: force on each ball at its contact with race k (N), moment about the ball
-        centre (N m), elastic approach δ (m) and normal load Q (N).
+        centre (N m), elastic approach δ (m), normal load Q (N) and the traction with its heat.
     """
     for idx in range(balls.position.shape[0] * 2 * balls.position.shape[1]):
         _race_contact(idx, balls, frames, geometry, laws, tables, terms, out)

@@ -93,6 +93,9 @@ class ContactOutputs(NamedTuple):
     moment: np.ndarray  #: (B, 2, Z, 3): about the ball centre, N m
     penetration: np.ndarray  #: (B, 2, Z): elastic approach δ, m
     load: np.ndarray  #: (B, 2, Z): normal load Q, N
+    #: (B, 2, Z, 4): the traction's f_x, f_y (N), M_z (N m) on the ball and its heat (W),
+    #: as :func:`contact.ballrace.ball_race_forces` reports them (zeros where none acts)
+    traction: np.ndarray
 
 
 class CageRecord(NamedTuple):

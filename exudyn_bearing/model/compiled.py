@@ -175,7 +175,7 @@ class Physics(NamedTuple):
 
 
 @njit(cache=True, error_model="numpy")
-def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, penetration, load):
+def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, penetration, load, traction):
     """Generalized forces ``out`` (6 n) of one state from Exudyn's coordinates q (without
     reference) and velocities q_t, as ``BearingConnector.forces``: contacts, cage, drag,
     guiding land, ``inputs`` = (angular velocities of the kinematic races (2, 3) rad/s,
@@ -184,7 +184,9 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     w_ref rad/s, 1/tau 1/s) the driven race's axial torque I (dw_ref/dt + (w_ref - w)/tau).
     ``mount`` and ``physics`` are :class:`Mount` and :class:`Physics` as plain tuples (see
     :mod:`contact.kernels.records`). Returns OK, NON_FINITE (state not finite; nothing
-    computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m).
+    computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m). ``penetration``,
+    ``load`` (2 Z) and ``traction`` (2, Z, 4) receive the contacts' δ, Q and traction
+    (:class:`~contact.kernels.records.ContactOutputs`).
     Serial: calling the parallel contact kernel from here (2 threads: case (a) 143 -> 83 us
     a call) made Dask worker processes crash once this module was recompiled against a cached
     contact module (DEVELOPMENT.md, 'Numba cache invalidation')."""
@@ -234,7 +236,8 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
         a[0, j] = rot[0, balls[j]]
     balls_now = kernels.BallStates(c, v, w, a)
     kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, laws, tables, terms,
-                          kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z)))
+                          kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z),
+                                                 traction.reshape(1, 2, z, 4)))
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
     cage_now = kernels.BodyStates(pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy())
@@ -339,6 +342,10 @@ class CompiledForces:
         self.no_driven = np.zeros((0, 5))
         self.out = np.empty(6 * con.n_nodes)
         self.penetration, self.load = np.empty(2 * b.balls), np.empty(2 * b.balls)
+        self.traction = np.empty((2, b.balls, 4))
+        #: q (without reference) and q_t of the last :meth:`single` call, whose contacts'
+        #: traction is in :attr:`traction` (exudyn_bearing.model.recorded_traction)
+        self.last_q, self.last_q_t = np.full(6 * con.n_nodes, np.nan), np.full(6 * con.n_nodes, np.nan)
         # compile (first use) or load the cached machine code now, not inside the solver's
         # first step (~0.3 s cached, ~20 s the very first time)
         _announce_compilation()
@@ -350,6 +357,7 @@ class CompiledForces:
         q = np.zeros((n, 6))
         q[:, :3] = pos[0]
         self.single(0.0, q.ravel(), np.zeros(6 * n), np.zeros(6 * n))
+        self.last_q[:] = np.nan  # the warm-up's state is not the scene's
         kernels.rotation_matrices(np.zeros((1, 3)))
         self._time_inputs = ((math.nan, None),)  # the warm-up's t = 0 inputs are not the scene's
 
@@ -386,9 +394,14 @@ class CompiledForces:
             self._time_inputs = ((t, con.applied_force), self.fixed_omega(t),
                                  np.asarray(con.applied_force(t), dtype=float), driven)
         _, fixed_omega, applied, driven = self._time_inputs
-        status = _one_state(np.asarray(q, dtype=float), np.asarray(q_t, dtype=float), reference, self._mount_tuple,
-                            self._physics_tuple, (fixed_omega, applied, driven),
-                            con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load)
+        q, q_t = np.asarray(q, dtype=float), np.asarray(q_t, dtype=float)
+        status = _one_state(q, q_t, reference, self._mount_tuple, self._physics_tuple, (fixed_omega, applied, driven),
+                            con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
+                            self.traction)
+        if status == OK:
+            self.last_q[:], self.last_q_t[:] = q, q_t
+        else:
+            self.last_q[:] = np.nan
         return status, self.out
 
     def _no_rotation(self, bsz):
@@ -403,7 +416,8 @@ class CompiledForces:
             self._work[bsz] = dict(
                 ro=np.empty((bsz, 2, 3)), rr=np.empty((bsz, 2, 3, 3)), rv=np.empty((bsz, 2, 3)),
                 rw=np.empty((bsz, 2, 3)), force=np.empty((bsz, 2, z, 3)), moment=np.empty((bsz, 2, z, 3)),
-                penetration=np.empty((bsz, 2, z)), load=np.empty((bsz, 2, z)), cage=np.empty((bsz, z, 3)),
+                penetration=np.empty((bsz, 2, z)), load=np.empty((bsz, 2, z)), traction=np.empty((bsz, 2, z, 4)),
+                cage=np.empty((bsz, z, 3)),
                 drag=np.empty((bsz, z, 3)), friction=np.empty((bsz, z, 3)), point=np.empty((bsz, z, 3)))
         return self._work[bsz]
 
@@ -436,7 +450,7 @@ class CompiledForces:
                                    np.take(rot, self.balls, axis=1) if self.material else self._no_rotation(bsz))
         ph = self.physics
         args = (balls, frames, ph.geometry, ph.laws, ph.tables, ph.terms,
-                kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"]))
+                kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"], w["traction"]))
         # contacts spread over numba's threads from the main thread; a threaded caller (a
         # Dask worker thread) runs them serially (numba's workqueue layer, its fallback when
         # OpenMP is missing, serves one caller at a time)
@@ -446,7 +460,7 @@ class CompiledForces:
         todo, b, k = self._reuse_pattern(bsz, self.balls.shape[0], same_contacts)
         kernels.race_contacts_parallel(*args, todo)
         if b.size:
-            for key in ("force", "moment", "penetration", "load"):
+            for key in ("force", "moment", "penetration", "load", "traction"):
                 w[key][b, k] = w[key][0, k]
         return w
 

@@ -24,6 +24,7 @@ from ..races import Race
 from .coverage import say_numpy_path, supports
 from .diagnostics import ConnectorDiagnostics
 from .land import GuidingLand, land_guide
+from .recorded_traction import RecordedTraction
 from .state import ConnectorState, both_races, first_state, per_race, stacked
 
 __all__ = ["CageModel", "BearingConnector", "ConnectorState"]
@@ -111,6 +112,8 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         self.progress = None  # the runner's progress reporter while it runs (called with t)
         self._params_cache = {}
         self._compiled = None
+        #: the traction of the states the run recorded, where it computed them (compiled path)
+        self.recorded = None
         self._jac_spec = None
         self._land_kernel = None
         self._rotations = rotation_matrices
@@ -119,6 +122,7 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                 from . import compiled
 
                 self._compiled = compiled.CompiledForces(self)
+                self.recorded = RecordedTraction(self._compiled)
                 self._rotations = compiled.kernels.rotation_matrices
                 self._land_kernel = compiled.kernels.land_forces
             else:
@@ -254,11 +258,14 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         absolute coordinates and velocities (B, 6 n_nodes)): a :class:`ConnectorState` whose
         fields, but the bearing frame's, carry a leading axis B; ``generalized`` is None. For
         the outputs of a finished run: the states are not checked as :meth:`forces` does. The
-        traction of a run on the compiled path is recomputed by its compiled rule (the one
-        that ran; ~20x cheaper than the numpy rule for a run's states)."""
+        traction of a run on the compiled path is the run's own where it recorded the state
+        (:class:`~exudyn_bearing.model.recorded_traction.RecordedTraction`), else recomputed by
+        its compiled rule (the one that ran; ~20x cheaper than the numpy rule)."""
         t = np.asarray(t, dtype=float)
         pos, rot, vel, omega = self._decode_batch(q, q_t)
-        _, _, parts = self._numpy_forces(t, pos, rot, vel, omega, compiled=self._compiled is not None)
+        known = None if self.recorded is None else self.recorded.lookup(q, q_t)
+        _, _, parts = self._numpy_forces(t, pos, rot, vel, omega, compiled=self._compiled is not None,
+                                         known_traction=known)
         return self._state(t, pos, rot, vel, omega, None, parts)
 
     def normal_loads(self, t, q, q_t, chunk: int = 256):
@@ -407,11 +414,12 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         return ball_race_kinematics(both_races(pos[:, balls]), both_races(vel[:, balls]), both_races(omega[:, balls]),
                                     *st, grooves, self.bearing.ball_radius, signs)
 
-    def _numpy_forces(self, t, pos, rot, vel, omega, surface=True, compiled=False):
+    def _numpy_forces(self, t, pos, rot, vel, omega, surface=True, compiled=False, known_traction=None):
         """The numpy path of :meth:`_batch_forces` (contact/ functions; the reference of
         the compiled path), before the guiding land, applied loads and held races;
         ``surface=False`` without the surfaces; ``compiled``: the traction by the law's compiled
-        rule (:func:`contact.ballrace.ball_race_forces`). Returns (out, react, (kinematics, forces, cage
+        rule (:func:`contact.ballrace.ball_race_forces`), and where ``known_traction`` (B, 2, Z, 4)
+        has it (not NaN), that rule's result as the run computed it. Returns (out, react, (kinematics, forces, cage
         force, drag force, race angular velocities, pocket friction or None))."""
         bsz, z, n_nodes = pos.shape[0], self.z, self.n_nodes
         balls = self.layout["balls"]
@@ -432,12 +440,13 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
                             race_omega=stacked(frames, 3, (3,), bsz, z))
             kin_all = with_surface(kin_all, self.terms, np.tile(np.repeat([0, 1], z), bsz), np.tile(np.arange(z), 2 * bsz),
                                    *self._surface_sizes, **pits)
+        known = None if known_traction is None else known_traction.reshape(-1, 4)
         if self.oils[0] is self.oils[1]:
             frc_all = ball_race_forces(kin_all, params, self.oils[0], self.law, self._race_terms[0],
-                                       compiled=compiled)
+                                       compiled=compiled, known_traction=known)
         else:
             frc_all = ball_race_forces_by_race(kin_all, params, self.oils[:2], self.law, self._race_terms,
-                                               compiled=compiled)
+                                               compiled=compiled, known_traction=known)
         f_con = frc_all.force.reshape(bsz, 2, z, 3)
         m_con = frc_all.moment.reshape(bsz, 2, z, 3)
         for k, name in enumerate(("inner", "outer")):

@@ -11,8 +11,9 @@ __all__ = ["add_state_sensor"]
 
 def add_state_sensor(mbs, nodes, connector):
     """A user-function sensor storing the bearing's absolute node coordinates and velocities
-    at every sensor write (the source of :meth:`BearingHandle.Results`); it also reports
-    progress where the runner asked for it."""
+    at every sensor write (the source of :meth:`BearingHandle.Results`), with the contacts'
+    traction where the run computed it there (:mod:`exudyn_bearing.model.recorded_traction`);
+    it also reports progress where the runner asked for it."""
     from exudyn.utilities import SensorUserFunction
 
     ref = connector.reference
@@ -23,8 +24,11 @@ def add_state_sensor(mbs, nodes, connector):
             indices.extend(node_rows(mbs_, nodes))
         if connector.progress is not None:
             connector.progress(t)
-        q = mbs_.systemData.GetODE2Coordinates(configuration=configuration)
-        q_t = mbs_.systemData.GetODE2Coordinates_t(configuration=configuration)
-        return np.concatenate([np.asarray(q)[indices] + ref, np.asarray(q_t)[indices]]).tolist()
+        q = np.asarray(mbs_.systemData.GetODE2Coordinates(configuration=configuration))[indices]
+        q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=configuration))[indices]
+        row = np.concatenate([q + ref, q_t])
+        if connector.recorded is not None:  # the run's traction there, for the outputs
+            connector.recorded.keep(row, q, q_t)
+        return row.tolist()
 
     return mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))
