@@ -1,5 +1,8 @@
 import sys
 
 from .studies.cli import main
+from .studies.grid import skip_final_collection
 
-sys.exit(main())
+code = main()
+skip_final_collection()
+sys.exit(code)

@@ -192,3 +192,39 @@ def test_thresholds_refined_on_workers_are_those_refined_here():
         there = result.refine_thresholds(confirm_time=0.002, tolerance=0.2, runner=runner)
     assert [t["rpm"] for t in here] == [900.0, 1800.0] and all("bracket" in t for t in here)
     assert there == here
+
+
+def test_refinement_takes_the_grid_points_steady_states_and_finds_the_same_threshold(monkeypatch):
+    """The bisection's ends are grid points whose runs started from their steady state: with
+    the map's own setup it takes those (two steady solves fewer) and refines to the very
+    entry it finds solving them; with another oil it solves them again."""
+    from dataclasses import replace
+
+    from exudyn_bearing.setup import BearingSetup
+    from exudyn_bearing.solvers.steady import steady_state
+
+    setup = BearingSetup(B)
+    calls = []
+
+    def counted(*args, **kw):
+        calls.append(kw["axial_force"])
+        return steady_state(*args, **kw)
+
+    monkeypatch.setattr(skidmap, "steady_state", counted)
+
+    def refined(steady, **kw):
+        pts = [SkidPoint(a, 0.0, 900.0, 0.1, kinematic_cage_slip_percent=s, cage_slip_percent=s, peak_ball_slip=0.1,
+                         settled=True, steady_kinematic_cage_slip_percent=steady(a))
+               for a, s in ((800.0, 2.2), (1500.0, 0.27))]
+        calls.clear()
+        out = SkidMap(B, pts, setup=setup).refine_thresholds(confirm_time=None, tolerance=0.1, **kw)
+        return out, list(calls)
+
+    solved = {a: steady_state(setup, axial_force=a, rpm=900.0).kinematic_cage_slip_percent for a in (800.0, 1500.0)}
+    given, given_calls = refined(solved.get)
+    again, again_calls = refined(lambda a: None)
+    assert given == again and "bracket" in given[0]
+    assert again_calls[:2] == [800.0, 1500.0] and given_calls == again_calls[2:]
+    thin = replace(setup.lubricant, viscosity=0.5 * setup.lubricant.viscosity)
+    _, other_calls = refined(solved.get, lubricant=thin)
+    assert other_calls[:2] == [800.0, 1500.0]

@@ -30,7 +30,7 @@ from ..results.records import setup_inputs, units_of
 from ..setup import FROM_SETUP, BearingSetup, refuse_thermal
 from ..solvers.steady import steady_state
 from .grid import CaseRunner, check_picklable, grid_values, guard_folder, read_journal
-from .skidmap_report import plot_skid_map, skid_map_markdown
+from .skidmap_report import load_plotting, plot_skid_map, skid_map_markdown
 
 __all__ = ["SkidPoint", "SkidMap", "skid_map", "parse_range"]
 
@@ -90,14 +90,19 @@ class SkidPoint:
 def _refine_threshold(args) -> tuple:
     """Worker of :meth:`SkidMap.refine_thresholds`: (its index, the refined entry) of one
     threshold ``entry`` whose grid points bracket ``level`` % between the loads ``bracket``:
-    the steady-state bisection and, with ``confirm_time``, the dynamic runs at its ends."""
-    index, entry, (lo, hi), setup, registered, level, tolerance, confirm_time = args
+    the steady-state bisection and, with ``confirm_time``, the dynamic runs at its ends.
+    ``known``: {axial N: steady kinematic slip %} of the bracket's grid points, whose runs
+    started from that very steady state (:func:`_run_point`), taken instead of solving it again."""
+    index, entry, (lo, hi), setup, registered, level, tolerance, confirm_time, known = args
     for name, term in registered:  # (a worker process: the terms its parent registered)
         if name not in TERMS:
             register_term(name, term)
     curve = []  # (axial N, steady kinematic slip %) of every converged evaluation
 
     def slip(axial):
+        if known.get(axial) is not None:
+            curve.append([axial, known[axial]])
+            return known[axial]
         state = steady_state(setup, axial_force=axial, rpm=entry["rpm"])
         if not state.converged:
             return None
@@ -222,13 +227,15 @@ class SkidMap:
         thresholds stay the grid's (noted). ``runner``: a
         :class:`~exudyn_bearing.studies.grid.CaseRunner` that refines the thresholds in
         parallel (:func:`skid_map` passes the one that ran the points); None: one after
-        another in this process."""
+        another in this process. Where the setup is the map's own, the bracket's grid points
+        give their steady states (the ones their runs started from) instead of solving them again."""
         setup = as_setup(self.setup or self.bearing, lubricant=lubricant, drag=ball_drag, contact_law=contact_law,
                          cage=cage)
         if setup.surface.active:
             return [dict(entry, note=entry["note"] + "; not refined: a defect or waviness has no steady state")
                     for entry in self.thresholds(level)]
         out, jobs = [], []
+        same_setup = self.setup is not None and setup == self.setup
         registered = applied_terms(setup.contact_law)
         if runner is not None:
             check_picklable(registered, runner.workers, runner.client)
@@ -238,8 +245,10 @@ class SkidMap:
             bracket = next(((lo, hi) for lo, hi in zip(pts, pts[1:]) if lo.kinematic_cage_slip_percent >= level
                             > hi.kinematic_cage_slip_percent), None)
             if entry["radial"] == 0 and bracket is not None:
+                # the grid points' steady states, where they were solved with this very setup
+                known = {p.axial: p.steady_kinematic_cage_slip_percent for p in bracket} if same_setup else {}
                 jobs.append((len(out), entry, (bracket[0].axial, bracket[1].axial), setup, registered, level,
-                             tolerance, confirm_time))
+                             tolerance, confirm_time, known))
             out.append(entry)
 
         def record(done):
@@ -380,6 +389,8 @@ def skid_map(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubrican
             progress(f"[{len(result.points)}/{len(grid)}] F_a {point.axial:g} N, F_r {point.radial:g} N, "
                      f"{point.rpm:g} rpm: {state}; {elapsed:.0f} s elapsed, ~{left:.0f} s left")
 
+    if out is not None and todo:
+        load_plotting()  # while the workers run
     with CaseRunner(workers, client) as runner:
         runner.run(_run_point, jobs, record)
         order = {p.key: i for i, p in enumerate(grid)}

@@ -2,11 +2,12 @@
 from __future__ import annotations
 
 import math
+import threading
 
 from ..criteria import hirano_minimum_axial
 from ..results.outputs import settled_label
 
-__all__ = ["skid_map_markdown", "plot_skid_map"]
+__all__ = ["skid_map_markdown", "plot_skid_map", "load_plotting"]
 
 
 def _note(p) -> str:
@@ -47,6 +48,24 @@ def skid_map_markdown(result) -> str:
         lines.append(f"| {t['rpm']:g} | {t['radial']:g} | {est} | {bracket} | {t['note']} | {dyn} | "
                      f"{t['hirano_minimum_axial']:.0f} | {t['gyroscopic_minimum_axial']:.0f} |")
     return "\n".join(lines)
+
+
+def _import_pyplot():
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot  # noqa: F401
+    except ImportError:
+        pass
+
+
+def load_plotting() -> threading.Thread:
+    """Import matplotlib's pyplot on a background thread (started, returned): the map's main
+    process only waits while its workers run the points, and the import (~0.3 s) would
+    otherwise come after them, before :func:`plot_skid_map` can draw."""
+    thread = threading.Thread(target=_import_pyplot, name="load matplotlib", daemon=True)
+    thread.start()
+    return thread
 
 
 def plot_skid_map(result, path) -> bool:
