@@ -20,12 +20,12 @@ from .float32 import exp32 as _exp32
 from .float32 import log32 as _log32
 from .float32 import one_minus_exp_neg32 as _one_minus_exp_neg32
 from .float32 import tanh32 as _tanh32
-from .records import CrookTables, LawRecord, traction_record
+from .records import CrookScratch, CrookTables, LawRecord, traction_record
 
 _F = np.float32
 _F1 = _F(1.0)
 
-__all__ = ["crook_fast", "crook_law", "crook_one", "crook_tables"]
+__all__ = ["crook_fast", "crook_law", "crook_one", "crook_scratch", "crook_tables"]
 
 _EPS_CAP = float(_tr._FAST_EPS_CAP)
 _LOG2_EPS_CAP = math.log2(_EPS_CAP)
@@ -46,6 +46,16 @@ def crook_tables(order: int = 16) -> CrookTables:
     psi, wpsi, rho, w = (np.ascontiguousarray(tab[k], dtype=np.float64) for k in ("psi", "wpsi", "rho", "w"))
     return CrookTables(np.cos(psi), np.sin(psi), wpsi, rho.astype(np.float32), w.astype(np.float32), rho, w)
 
+
+
+@njit(cache=True, error_model="numpy")
+def crook_scratch(tables):
+    """The work arrays of :func:`crook_one` for ``tables`` (:class:`CrookScratch`), for one
+    thread's loop over contacts."""
+    n_rays = tables.cos_psi.shape[0]
+    padded = (n_rays + 7) // 8 * 8  # a multiple of 8 float32 lanes (AVX2)
+    return CrookScratch(np.empty((8, n_rays)), np.zeros((4, padded), np.float32), np.zeros((6, padded), np.float32),
+                        np.empty((3, padded), np.float32), np.zeros(7), np.empty(7, np.float32), np.empty(8))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS)
@@ -157,19 +167,18 @@ def _elastic_node(rm, r2, cq, br, cd, sd, pr, lamh32, a032, itlc32, tlc32, el):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FLAGS)
-def _rays32_elastic(ir, lam, a0, tlc, rho_tab, w_tab, ray, el64, k):
+def _rays32_elastic(ir, lam, a0, tlc, rho_tab, w_tab, ray, el64, k, el):
     """:func:`_rays32` with the film's elastic compliance (MODEL.md §6b): g (1 − e^(−1/R)),
     R = τ_v/|τ_e| = τ_C' er0/(σ |Ξ| |w|), Ξ = ξ/b the distance from the inlet edge and w the
     strain rate averaged since the inlet; then the smooth limiting shear for ``tlc`` > 0.
     ``ray`` rows 4, 5: the ray's direction (c, s) in normalized coordinates; ``el64``: Xo,
     Yo (ray origin, normalized), sign ū, ω b, v_y at the origin, er0 = η_T |ū|/(√c_th κ p_max b)
-    and 1/c_th."""
+    and 1/c_th; ``el`` (7,) float32 receives them."""
     rm, r2, cq, br, cd, sd = ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]
     k0, k1, k2 = k[0], k[1], k[2]
     lamh32, a032 = _F(0.5 * lam), _F(a0)
     tlc32 = _F(tlc)
     itlc32 = _F(1.0 / tlc) if tlc > 0.0 else _F(0.0)
-    el = np.empty(7, np.float32)
     for i in range(7):
         el[i] = el64[i]
     k[:] = 0.0
@@ -297,7 +306,7 @@ def _pole_rule(ux, uy, om, a, b, lo, lam, cth):
 
 
 @njit(cache=True, error_model="numpy")
-def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
+def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables, scratch):
     """(f_x, f_y, M_z, heat) of one contact by the fast rule (MODEL.md §6; see
     :func:`contact.traction_fast._fast_crook`, whose steps this follows one contact at a time).
 
@@ -312,6 +321,8 @@ def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
     law : LawRecord
         η0, c_ηP, c_ηT/(8 K_c), the limiting shear Λ (§6a; 0: none) and κ = G/p (§6b; 0: none).
     tables : CrookTables
+    scratch : CrookScratch
+        :func:`crook_scratch` of ``tables`` (overwritten).
     """
     eta_t, c_p, c1_coef, lam_s, kap_e = law.eta0, law.c_p, law.c1_coef, law.limiting_shear, law.film_modulus
     cos_tab, sin_tab, wpsi_tab = tables.cos_psi, tables.sin_psi, tables.wpsi
@@ -330,8 +341,8 @@ def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
     n_rays = cos_tab.shape[0]
     c0, s0 = math.cos(th0), math.sin(th0)
     elastic = kap_e > 0.0 and ent != 0.0
-    geo = np.empty((8, n_rays))
-    ray = np.zeros((6 if elastic else 4, (n_rays + 7) // 8 * 8), np.float32)
+    geo = scratch.geo
+    ray = scratch.ray6 if elastic else scratch.ray4
     for d in range(n_rays):
         c = cos_tab[d, ie] * c0 - sin_tab[d, ie] * s0  # direction th0 + psi
         s = sin_tab[d, ie] * c0 + cos_tab[d, ie] * s0
@@ -351,21 +362,22 @@ def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
         if elastic:
             ray[4, d] = c
             ray[5, d] = s
-    k = np.empty((3, ray.shape[1]), np.float32)
+    k = scratch.sums
     tlc = lam_s * pm * hh * math.sqrt(cth) / eta_t  # τ_L' = tlc σ in the rule's units
-    el = np.zeros(7)
+    el = scratch.elastic
+    el[:] = 0.0
     if elastic:
         el[0], el[1] = Xo, Yo
         el[2] = 1.0 if ent > 0.0 else -1.0
         el[3], el[4] = om * b, uOy
         el[5] = eta_t * abs(ent) / (math.sqrt(cth) * kap_e * pm * b)
         el[6] = 1.0 / cth
-        _rays32_elastic(ir, lam, a0, tlc, rho32, w32, ray, el, k)
+        _rays32_elastic(ir, lam, a0, tlc, rho32, w32, ray, el, k, scratch.elastic32)
     elif tlc > 0.0:
         _rays32_capped(ir, lam, a0, tlc, rho32, w32, ray, k)
     else:
         _rays32(ir, lam, a0, rho32, w32, ray, k)
-    s64 = np.empty(8)
+    s64 = scratch.wide
     S0 = 0.0
     Sx = 0.0
     Sy = 0.0
@@ -394,9 +406,10 @@ def crook_one(ux, uy, om, a, b, pm, hh, ent, law, tables):
 
 @njit(cache=True, error_model="numpy")
 def _crook_many(ux, uy, om, a, b, pm, hh, ent, law, tables, out):
+    scratch = crook_scratch(tables)
     for i in range(ux.shape[0]):
         out[0, i], out[1, i], out[2, i], out[3, i] = crook_one(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], ent[i],
-                                                               law, tables)
+                                                               law, tables, scratch)
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
@@ -406,7 +419,7 @@ def _crook_many_prange(ux, uy, om, a, b, pm, hh, ent, flat_law, tables, out):
     for i in prange(ux.shape[0]):
         law = LawRecord(*flat_law)
         out[0, i], out[1, i], out[2, i], out[3, i] = crook_one(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], ent[i],
-                                                               law, tables)
+                                                               law, tables, crook_scratch(tables))
 
 
 #: contacts from which :func:`crook_fast` spreads its loop over numba's threads (a recorded

@@ -19,7 +19,7 @@ from ..film import central_film
 from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
 from ..surface import SurfaceRecord
 from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
-from .crook import crook_one
+from .crook import crook_one, crook_scratch
 from .records import LawRecord
 
 __all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
@@ -168,7 +168,7 @@ def _normal_load(pen, rate, r_x, conformity, geometry, law):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms):
+def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms, scratch):
     """(f_x, f_y along t1, t2 N, M_z N m, the per-contact terms' force along t1 N and couple
     about t2 N m) on the ball of a loaded contact, and the traction's heat (W): Hamrock–Dowson film (P17) with the terms'
     film factor, the Crook traction by the fast rule, the terms' stage 2."""
@@ -186,7 +186,7 @@ def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, 
     heating = 8.0 * law.c1_coef if terms.heating > 0.0 else 0.0
     phi_t = film_factor(terms, cs, heating)  # the per-contact terms (contact.terms), stage 1
     h = max(phi_t * h, law.min_film)
-    fx, fy, mz, heat = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables)
+    fx, fy, mz, heat = crook_one(u_x, u_y, spin, sa, sb, min(p_max, p_cap), h, entrainment, law, tables, scratch)
     if not law.spin_moment:
         mz = 0.0
     f_b, m_r = contact_loads(terms, cs, phi_t)  # stage 2
@@ -194,8 +194,9 @@ def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, 
 
 
 @njit(cache=True, error_model="numpy")
-def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out):
-    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`."""
+def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out, scratch):
+    """Contact ``idx`` (state idx // 2Z, race idx // Z % 2, ball idx % Z) of :func:`race_contacts`
+    (``scratch``: the traction's work arrays, :func:`contact.kernels.crook.crook_scratch`)."""
     z = balls.position.shape[1]
     ib = idx // (2 * z)
     k = (idx // z) % 2
@@ -214,7 +215,7 @@ def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out):
     f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if law.traction == 1 and q > 0.0:
         fx, fy, mz, f_b, m_r, heat = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin), entrainment,
-                                                 rolling_rate, geometry, law, tables, terms)
+                                                 rolling_rate, geometry, law, tables, terms, scratch)
     traction = out.traction
     traction[ib, k, j, 0] = fx
     traction[ib, k, j, 1] = fy
@@ -277,8 +278,9 @@ def race_contacts(balls, frames, geometry, laws, tables, terms, out):
         Written: force on each ball at its contact with race k (N), moment about the ball
         centre (N m), elastic approach δ (m), normal load Q (N) and the traction with its heat.
     """
+    scratch = crook_scratch(tables)
     for idx in range(balls.position.shape[0] * 2 * balls.position.shape[1]):
-        _race_contact(idx, balls, frames, geometry, laws, tables, terms, out)
+        _race_contact(idx, balls, frames, geometry, laws, tables, terms, out, scratch)
 
 
 @njit(cache=True, error_model="numpy")
@@ -286,8 +288,9 @@ def race_contacts_at(balls, frames, geometry, laws, tables, terms, out, todo):
     """:func:`race_contacts` for the flat contact indices ``todo`` only (state idx // 2Z, race
     idx // Z % 2, ball idx % Z; int64): the rest of the outputs is left as it is (a Jacobian's
     race columns change one race's contacts only)."""
+    scratch = crook_scratch(tables)
     for n in range(todo.shape[0]):
-        _race_contact(todo[n], balls, frames, geometry, laws, tables, terms, out)
+        _race_contact(todo[n], balls, frames, geometry, laws, tables, terms, out, scratch)
 
 
 #: the fields of one race's law in the laws' flat tuple (:func:`race_contacts_parallel`)
@@ -312,7 +315,7 @@ def _race_contact_flat(idx, balls, frames, geometry, flat_laws, tables, flat, ou
     fields, then outer's) and the terms from :func:`_flat_terms`' tuple."""
     laws = (LawRecord(*flat_laws[:_N_LAW]), LawRecord(*flat_laws[_N_LAW:]))
     terms = TermRecord(SurfaceRecord(*flat[:_N_SURFACE]), *flat[_N_SURFACE:], ())
-    _race_contact(idx, balls, frames, geometry, laws, tables, terms, out)
+    _race_contact(idx, balls, frames, geometry, laws, tables, terms, out, crook_scratch(tables))
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
