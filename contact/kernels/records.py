@@ -102,7 +102,8 @@ class CrookScratch(NamedTuple):
     """Work arrays of :func:`contact.kernels.crook.crook_one`, made once per loop over contacts
     (:func:`contact.kernels.crook.crook_scratch`; one per thread) instead of once per contact
     (seven heap allocations, ~9 % of a 32-contact evaluation). The rays' float32 rows keep
-    zeros beyond the last ray: padding rays have ρ_max = 0."""
+    zeros beyond the last ray: padding rays (to a whole number of vectors,
+    :data:`contact.kernels.crook.LANES`) have ρ_max = 0."""
 
     geo: np.ndarray  #: (8, rays) float64: each ray's geometry
     ray4: np.ndarray  #: (4, padded rays) float32: the rule's ray constants
