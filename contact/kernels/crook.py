@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import threading
 
+import numba
 import numpy as np
 from numba import njit, prange
 
@@ -431,13 +432,16 @@ def _crook_many(ux, uy, om, a, b, pm, hh, ent, law, tables, out):
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def _crook_many_prange(ux, uy, om, a, b, pm, hh, ent, flat_law, tables, out):
-    """:func:`_crook_many` on numba's threads (the law crosses the parallel loop as a flat
-    tuple, rebuilt per contact)."""
-    for i in prange(ux.shape[0]):
+def _crook_many_prange(ux, uy, om, a, b, pm, hh, ent, flat_law, tables, out, chunks):
+    """:func:`_crook_many` on numba's threads in ``chunks`` pieces, each with its own work arrays
+    (the law crosses the parallel loop as a flat tuple, rebuilt per chunk)."""
+    n = ux.shape[0]
+    for c in prange(chunks):
         law = LawRecord(*flat_law)
-        out[0, i], out[1, i], out[2, i], out[3, i] = crook_one(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i], ent[i],
-                                                               law, tables, crook_scratch(tables))
+        scratch = crook_scratch(tables)
+        for i in range(c * n // chunks, (c + 1) * n // chunks):
+            out[0, i], out[1, i], out[2, i], out[3, i] = crook_one(ux[i], uy[i], om[i], a[i], b[i], pm[i], hh[i],
+                                                                   ent[i], law, tables, scratch)
 
 
 #: contacts from which :func:`crook_fast` spreads its loop over numba's threads (a recorded
@@ -462,7 +466,7 @@ def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16, limiting_
     # the race kernels do (exudyn_bearing.model.compiled: numba's workqueue layer serves one
     # caller at a time)
     if n >= PARALLEL_CONTACTS and threading.current_thread() is threading.main_thread():
-        _crook_many_prange(*args, ent, tuple(law), crook_tables(order), out)
+        _crook_many_prange(*args, ent, tuple(law), crook_tables(order), out, min(n, 4 * numba.get_num_threads()))
     else:
         _crook_many(*args, ent, law, crook_tables(order), out)
     return out

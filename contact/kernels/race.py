@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import get_num_threads, njit, prange
 
 from ..film import central_film
 from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
@@ -310,28 +310,39 @@ def _flat_terms(terms):
 
 
 @njit(cache=True, error_model="numpy")
-def _race_contact_flat(idx, balls, frames, geometry, flat_laws, tables, flat, out):
-    """:func:`_race_contact` with the two races' laws rebuilt from one flat tuple (inner's
+def _race_contacts_flat(todo, balls, frames, geometry, flat_laws, tables, flat, out):
+    """:func:`race_contacts_at` with the two races' laws rebuilt from one flat tuple (inner's
     fields, then outer's) and the terms from :func:`_flat_terms`' tuple."""
     laws = (LawRecord(*flat_laws[:_N_LAW]), LawRecord(*flat_laws[_N_LAW:]))
     terms = TermRecord(SurfaceRecord(*flat[:_N_SURFACE]), *flat[_N_SURFACE:], ())
-    _race_contact(idx, balls, frames, geometry, laws, tables, terms, out, crook_scratch(tables))
+    scratch = crook_scratch(tables)
+    for n in range(todo.shape[0]):
+        _race_contact(todo[n], balls, frames, geometry, laws, tables, terms, out, scratch)
+
+
+#: chunks of contacts per thread in :func:`race_contacts_parallel` (each chunk makes its
+#: traction work arrays once; several per thread even out loaded and unloaded contacts)
+CHUNKS_PER_THREAD = 4
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def _race_contacts_prange(balls, frames, geometry, laws, tables, flat, out, todo):
-    """The contacts ``todo`` on numba's threads (:func:`race_contacts_parallel`)."""
-    for n in prange(todo.shape[0]):
-        _race_contact_flat(todo[n], balls, frames, geometry, laws, tables, flat, out)
+def _race_contacts_prange(balls, frames, geometry, laws, tables, flat, out, todo, chunks):
+    """The contacts ``todo`` on numba's threads (:func:`race_contacts_parallel`), in ``chunks``
+    pieces (at most the contacts' number)."""
+    n = todo.shape[0]
+    for c in prange(chunks):
+        _race_contacts_flat(todo[c * n // chunks:(c + 1) * n // chunks], balls, frames, geometry, laws, tables, flat,
+                            out)
 
 
 def race_contacts_parallel(balls, frames, geometry, laws, tables, terms, out, todo):
     """:func:`race_contacts_at` with the contacts ``todo`` spread over numba's threads.
 
-    The two laws and the terms cross numba's parallel loop as flat tuples rebuilt per contact by position
+    The two laws and the terms cross numba's parallel loop as flat tuples rebuilt per chunk by position
     (:func:`_flat_terms`), never field by field, so no field can be left at its default
     there; registered terms (functions, which cannot cross it) run serially."""
     if len(terms.registered) > 0:
         race_contacts_at(balls, frames, geometry, laws, tables, terms, out, todo)
         return
-    _race_contacts_prange(balls, frames, geometry, (*laws[0], *laws[1]), tables, _flat_terms(terms), out, todo)
+    chunks = min(todo.shape[0], CHUNKS_PER_THREAD * get_num_threads())  # (in Python: numba cannot cache it inside)
+    _race_contacts_prange(balls, frames, geometry, (*laws[0], *laws[1]), tables, _flat_terms(terms), out, todo, chunks)
