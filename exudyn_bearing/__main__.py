@@ -1,8 +1,5 @@
 import sys
 
-from .studies.cli import main
-from .studies.grid import skip_final_collection
+from .studies.cli import run
 
-code = main()
-skip_final_collection()
-sys.exit(code)
+sys.exit(run())

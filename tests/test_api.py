@@ -32,9 +32,9 @@ def test_create_is_a_method_of_exudyns_main_system():
 
 def test_the_installed_command_is_the_cli():
     scripts = {ep.name: ep.value for ep in metadata.entry_points(group="console_scripts")}
-    assert scripts.get("exudyn-bearing") == "exudyn_bearing.studies.cli:main"
-    out = subprocess.run([sys.executable, "-c", "import sys; sys.argv[0] = 'exudyn-bearing'; "
-                          "from exudyn_bearing.studies.cli import main; sys.exit(main(['--help']))"],
+    assert scripts.get("exudyn-bearing") == "exudyn_bearing.studies.cli:run"
+    out = subprocess.run([sys.executable, "-c", "import sys; sys.argv[:] = ['exudyn-bearing', '--help']; "
+                          "from exudyn_bearing.studies.cli import run; sys.exit(run())"],
                          capture_output=True, text=True, timeout=120)
     assert out.returncode == 0 and out.stdout.startswith("usage: exudyn-bearing")
 

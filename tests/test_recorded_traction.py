@@ -64,39 +64,52 @@ def test_every_recorded_state_keeps_the_traction_the_run_computed(case):
 
 
 def test_a_state_the_run_did_not_evaluate_last_is_not_kept_nor_served():
-    """The state sensor keeps only the state the compiled path evaluated last; a state altered
-    by one ulp finds nothing, and its traction is computed, not served from its neighbour."""
+    """The state sensor keeps only the state the compiled path evaluated last, at its time; a
+    state one ulp away, or the same state at another time, finds nothing; an evaluation
+    elsewhere before the state is recorded again drops what it kept."""
+    from exudyn_bearing.model.sensors import node_rows
+
     mbs, h = _run(end=0.002)
     con = h.connector
     t, q, q_t = h.States(mbs)
+    rows = node_rows(mbs, h.nodeNumbers)
+    exact_q = np.asarray(mbs.systemData.GetODE2Coordinates())[rows]  # the end state as the kernel saw it
+    exact_v = np.asarray(mbs.systemData.GetODE2Coordinates_t())[rows]
     row = np.concatenate([q[-1], q_t[-1]])
-    ref = con.reference
-    assert con.recorded.keep(row, q[-1] - ref, q_t[-1]) is False  # (q + ref) - ref is not q, bit for bit
+    assert con.recorded.keep(t[-1], row, exact_q, exact_v)  # the last evaluation was this state
+    assert not con.recorded.keep(t[-1] + 1e-9, row, exact_q, exact_v)  # at another time: not that evaluation
+    assert con.recorded.keep(t[-1], row, exact_q, exact_v)
+    assert con.recorded.lookup(t[-1:], q[-1:], q_t[-1:]) is not None
+    assert con.recorded.lookup(t[-1:] + 1e-4, q[-1:], q_t[-1:]) is None
     moved = q_t[-1:].copy()
     ball = 6 * con.layout["balls"][0]
     moved[0, ball] = np.nextafter(moved[0, ball], np.inf)
-    assert con.recorded.lookup(q[-1:], moved) is None
-    both = con.recorded.lookup(np.vstack([q[-1:], q[-1:]]), np.vstack([q_t[-1:], moved]))
-    assert np.all(np.isfinite(both[0])) and np.all(np.isnan(both[1]))
-    # an evaluation elsewhere after the run: the recorded state is no longer the last one
-    con.residual_forces(t[-1], q[-1] - ref, moved[0])
-    assert con.recorded.keep(row, q[-1] - ref, q_t[-1]) is False
+    assert con.recorded.lookup(t[-1:], q[-1:], moved) is None
+    both = con.recorded.lookup(np.repeat(t[-1:], 2), np.vstack([q[-1:], q[-1:]]), np.vstack([q_t[-1:], moved]))
+    assert np.any(np.isfinite(both[0])) and np.all(np.isnan(both[1]))
+    # an evaluation elsewhere, then the state recorded again: not kept, and the old one dropped
+    con.residual_forces(t[-1], exact_q, moved[0])
+    assert not con.recorded.keep(t[-1], row, exact_q, exact_v)
+    assert con.recorded.lookup(t[-1:], q[-1:], q_t[-1:]) is None
 
 
-def test_the_kept_traction_is_the_runs_when_the_oil_changed_later():
-    """The outputs report what the run computed: a thinner oil set after the run changes the
-    recomputed traction, not the kept one (which equals the recomputation with the run's oil)."""
+def test_other_oils_find_nothing_and_the_runs_own_find_the_kept_traction():
+    """The key holds the physics: with a thinner oil set after the run the outputs compute the
+    traction with that oil (and it changes); with the run's oil set back, they take the kept
+    one again, bit for bit."""
     from dataclasses import replace
 
     mbs, h = _run(end=0.002)
     con = h.connector
     before = h.Results(mbs)
+    own = con.oils
     thin = replace(con.lubricant, viscosity=0.5 * con.lubricant.viscosity)
     con.set_oils(thin, thin)
-    after = h.Results(mbs)
-    _assert_same_traction(after, before, rtol=0.0)
-    changed = _recomputed(h, mbs)
+    changed = h.Results(mbs)
+    _assert_same_traction(changed, _recomputed(h, mbs))
     assert np.max(np.abs(changed.inner["heat"] - before.inner["heat"])) > 1e-3 * np.max(before.inner["heat"])
+    con.set_oils(*own)
+    _assert_same_traction(h.Results(mbs), before, rtol=0.0)
 
 
 def test_plain_solve_dynamic_keeps_the_written_states():

@@ -220,7 +220,11 @@ def test_refinement_takes_the_grid_points_steady_states_and_finds_the_same_thres
         out = SkidMap(B, pts, setup=setup).refine_thresholds(confirm_time=None, tolerance=0.1, **kw)
         return out, list(calls)
 
-    solved = {a: steady_state(setup, axial_force=a, rpm=900.0).kinematic_cage_slip_percent for a in (800.0, 1500.0)}
+    # the premise: a grid point's run starts from the very steady state the bisection solves
+    solved = {a: skidmap._run_point((SkidPoint(a, 0.0, 900.0, 0.002), setup, ()))["steady_kinematic_cage_slip_percent"]
+              for a in (800.0, 1500.0)}
+    assert solved == {a: steady_state(setup, axial_force=a, rpm=900.0).kinematic_cage_slip_percent
+                      for a in (800.0, 1500.0)}
     given, given_calls = refined(solved.get)
     again, again_calls = refined(lambda a: None)
     assert given == again and "bracket" in given[0]

@@ -41,20 +41,24 @@ _PSI_MIN = 1e-12  # the fast rule's ψ floor (keeps G(ψ) finite at the pole)
 
 
 def _vector_lanes() -> int:
-    """float32 lanes of the widest vectors numba compiles the ray loops for on this host: 16
-    with AVX-512, else 8."""
+    """float32 lanes of the vectors numba compiles the ray loops for on this host: 16 where
+    that was measured (AMD Zen 5, ``znver5``: LLVM vectorizes them with AVX-512), else 8, the
+    AVX2 width (other processors are not measured, and a target other than the host,
+    ``NUMBA_CPU_NAME``, may have other vectors)."""
     try:
         from llvmlite import binding
 
-        return 16 if binding.get_host_cpu_features().get("avx512f", False) else 8
+        wide = binding.get_host_cpu_name().startswith("znver5") and binding.get_host_cpu_features().get("avx512f")
     except Exception:  # noqa: BLE001 - a host llvmlite cannot describe gets the AVX2 width
-        return 8
+        wide = False
+    return 16 if wide and not numba.config.CPU_NAME else 8
 
 
 #: the rays are padded to a multiple of this (padding rays have ρ_max = 0): a loop over rays
 #: that is not a whole number of vectors ends in scalar code, which on a 16-lane host took
 #: the 36 rays of order 16 (40 padded to 8 lanes: two vectors and 8 scalar rays) from 81 to
-#: 96 µs for 32 contacts
+#: 96 µs for 32 contacts. Results differ between hosts of other widths by float32 rounding
+#: (2e-8 N on those contacts)
 LANES = _vector_lanes()
 
 

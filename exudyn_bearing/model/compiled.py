@@ -182,14 +182,11 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     ``applied`` force (N) on the inner race slot, ``driven`` rows), ``held`` components of
     the ``mount`` dropped, and per ``driven`` row (slot, I_axial kg m², dw_ref/dt rad/s²,
     w_ref rad/s, 1/tau 1/s) the driven race's axial torque I (dw_ref/dt + (w_ref - w)/tau).
-    ``mount`` and ``physics`` are :class:`Mount` and :class:`Physics` as plain tuples (see
-    :mod:`contact.kernels.records`). Returns OK, NON_FINITE (state not finite; nothing
-    computed) or TOO_DEEP (an elastic approach above ``max_penetration`` m). ``penetration``,
-    ``load`` (2 Z) and ``traction`` (2, Z, 4) receive the contacts' δ, Q and traction
-    (:class:`~contact.kernels.records.ContactOutputs`).
-    Serial: calling the parallel contact kernel from here (2 threads: case (a) 143 -> 83 us
-    a call) made Dask worker processes crash once this module was recompiled against a cached
-    contact module (DEVELOPMENT.md, 'Numba cache invalidation')."""
+    ``mount``, ``physics``: :class:`Mount`, :class:`Physics` as plain tuples. Returns OK,
+    NON_FINITE (state not finite; nothing computed) or TOO_DEEP (an elastic approach above
+    ``max_penetration`` m); the contacts' δ, Q and traction go to ``penetration``, ``load``
+    (2 Z) and ``traction`` (2, Z, 4).
+    Serial: a parallel kernel called from here crashed Dask workers (DEVELOPMENT.md, 'Numba cache invalidation')."""
     mount = Mount(*mount)
     balls, slots, cage_slot, held = mount.balls, mount.slots, mount.cage_slot, mount.held
     geometry, laws, tables, terms, cage, pocket, guide = physics
@@ -235,9 +232,9 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     for j in range(zr):
         a[0, j] = rot[0, balls[j]]
     balls_now = kernels.BallStates(c, v, w, a)
-    kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, laws, tables, terms,
-                          kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z),
-                                                 traction.reshape(1, 2, z, 4)))
+    contacts = kernels.ContactOutputs(force, moment, penetration.reshape(1, 2, z), load.reshape(1, 2, z),
+                                      traction.reshape(1, 2, z, 4))
+    kernels.race_contacts(balls_now, kernels.RaceFrames(ro, rr, rv, rw), geometry, laws, tables, terms, contacts)
     cs = cage_slot if cage_slot >= 0 else 0
     cage_force, drag_force = np.empty((1, z, 3)), np.empty((1, z, 3))
     cage_now = kernels.BodyStates(pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy())
@@ -343,9 +340,9 @@ class CompiledForces:
         self.out = np.empty(6 * con.n_nodes)
         self.penetration, self.load = np.empty(2 * b.balls), np.empty(2 * b.balls)
         self.traction = np.empty((2, b.balls, 4))
-        #: q (without reference) and q_t of the last :meth:`single` call, whose contacts'
+        #: t, q (without reference) and q_t of the last :meth:`single` call, whose contacts'
         #: traction is in :attr:`traction` (exudyn_bearing.model.recorded_traction)
-        self.last_q, self.last_q_t = np.full(6 * con.n_nodes, np.nan), np.full(6 * con.n_nodes, np.nan)
+        self.last_t, self.last_q, self.last_q_t = math.nan, np.full(6 * con.n_nodes, np.nan), np.empty(6 * con.n_nodes)
         # compile (first use) or load the cached machine code now, not inside the solver's
         # first step (~0.3 s cached, ~20 s the very first time)
         _announce_compilation()
@@ -398,6 +395,7 @@ class CompiledForces:
         status = _one_state(q, q_t, reference, self._mount_tuple, self._physics_tuple, (fixed_omega, applied, driven),
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
                             self.traction)
+        self.last_t = t
         if status == OK:
             self.last_q[:], self.last_q_t[:] = q, q_t
         else:

@@ -263,7 +263,7 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         its compiled rule (the one that ran; ~20x cheaper than the numpy rule)."""
         t = np.asarray(t, dtype=float)
         pos, rot, vel, omega = self._decode_batch(q, q_t)
-        known = None if self.recorded is None else self.recorded.lookup(q, q_t)
+        known = None if self.recorded is None else self.recorded.lookup(t, q, q_t)
         _, _, parts = self._numpy_forces(t, pos, rot, vel, omega, compiled=self._compiled is not None,
                                          known_traction=known)
         return self._state(t, pos, rot, vel, omega, None, parts)

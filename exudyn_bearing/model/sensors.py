@@ -28,7 +28,7 @@ def add_state_sensor(mbs, nodes, connector):
         q_t = np.asarray(mbs_.systemData.GetODE2Coordinates_t(configuration=configuration))[indices]
         row = np.concatenate([q + ref, q_t])
         if connector.recorded is not None:  # the run's traction there, for the outputs
-            connector.recorded.keep(row, q, q_t)
+            connector.recorded.keep(t, row, q, q_t)
         return row.tolist()
 
     return mbs.AddSensor(SensorUserFunction(sensorUserFunction=record, storeInternal=True, writeToFile=False))

@@ -485,3 +485,14 @@ def main(argv=None) -> int:
         parser.exit(2, f"error: {message}\n")
     except RuntimeError as err:  # solver failures carry their own explanation
         parser.exit(1, f"error: {err}\n")
+
+
+def run() -> int:
+    """The command line's entry point (the ``exudyn-bearing`` script and ``python -m
+    exudyn_bearing``): :func:`main`, then an exit without the interpreter's last garbage
+    collection (:func:`~exudyn_bearing.studies.grid.skip_final_collection`)."""
+    from .grid import skip_final_collection
+
+    code = main()
+    skip_final_collection()
+    return code

@@ -87,8 +87,10 @@ def check_picklable(registered, workers: int | None, client) -> None:
 def skip_final_collection() -> None:
     """Let this process exit without the interpreter's last garbage collection: it walks every
     object numba and Exudyn created (0.2–0.4 s) to free memory the process is about to hand
-    back anyway. Objects still alive are frozen (``gc.freeze``); files and pipes are closed
-    as before, by their owners or by the interpreter."""
+    back anyway. Objects still alive are frozen (``gc.freeze``), so one kept alive only by a
+    reference cycle is not finalized: call it when everything the process wrote is closed
+    (the commands write their files in ``with`` blocks; the interpreter still flushes the
+    standard streams)."""
     gc.freeze()
 
 

@@ -245,8 +245,10 @@ class SkidMap:
             bracket = next(((lo, hi) for lo, hi in zip(pts, pts[1:]) if lo.kinematic_cage_slip_percent >= level
                             > hi.kinematic_cage_slip_percent), None)
             if entry["radial"] == 0 and bracket is not None:
-                # the grid points' steady states, where they were solved with this very setup
-                known = {p.axial: p.steady_kinematic_cage_slip_percent for p in bracket} if same_setup else {}
+                # the grid points' steady states, where they were solved with this very setup (at a
+                # negative speed the run's start solves the mirrored bearing: solved again here)
+                known = ({p.axial: p.steady_kinematic_cage_slip_percent for p in bracket}
+                         if same_setup and entry["rpm"] > 0 else {})
                 jobs.append((len(out), entry, (bracket[0].axial, bracket[1].axial), setup, registered, level,
                              tolerance, confirm_time, known))
             out.append(entry)
