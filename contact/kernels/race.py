@@ -19,7 +19,7 @@ from ..film import central_film
 from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
 from ..surface import SurfaceRecord
 from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
-from .crook import crook_one, crook_scratch
+from .crook import CHUNKS_PER_THREAD, crook_one, crook_scratch
 from .records import LawRecord
 
 __all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
@@ -170,8 +170,9 @@ def _normal_load(pen, rate, r_x, conformity, geometry, law):
 @njit(cache=True, error_model="numpy", inline="always")
 def _contact_traction(q, hertz, r_x, slip, entrainment, rolling_rate, geometry, law, tables, terms, scratch):
     """(f_x, f_y along t1, t2 N, M_z N m, the per-contact terms' force along t1 N and couple
-    about t2 N m) on the ball of a loaded contact, and the traction's heat (W): Hamrock–Dowson film (P17) with the terms'
-    film factor, the Crook traction by the fast rule, the terms' stage 2."""
+    about t2 N m) on the ball of a loaded contact, and the traction's heat (W): Hamrock–Dowson
+    film (P17) with the terms' film factor, the Crook traction by the fast rule, the terms'
+    stage 2."""
     ell, second, radius, r_y = hertz
     u_x, u_y, spin = slip
     e_prime, ball_radius, eta0, c_p = geometry.e_prime, geometry.ball_radius, law.eta0, law.c_p
@@ -214,8 +215,9 @@ def _race_contact(idx, balls, frames, geometry, laws, tables, terms, out, scratc
     m_r = 0.0  # rolling-resistance couple about t2, on the ball
     f_b = 0.0  # and its net force on the ball along t1 at the contact point
     if law.traction == 1 and q > 0.0:
-        fx, fy, mz, f_b, m_r, heat = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin), entrainment,
-                                                 rolling_rate, geometry, law, tables, terms, scratch)
+        fx, fy, mz, f_b, m_r, heat = _contact_traction(q, (ell, second, radius, r_y), r_x, (u_x, u_y, spin),
+                                                       entrainment, rolling_rate, geometry, law, tables, terms,
+                                                       scratch)
     traction = out.traction
     traction[ib, k, j, 0] = fx
     traction[ib, k, j, 1] = fy
@@ -318,11 +320,6 @@ def _race_contacts_flat(todo, balls, frames, geometry, flat_laws, tables, flat, 
     scratch = crook_scratch(tables)
     for n in range(todo.shape[0]):
         _race_contact(todo[n], balls, frames, geometry, laws, tables, terms, out, scratch)
-
-
-#: chunks of contacts per thread in :func:`race_contacts_parallel` (each chunk makes its
-#: traction work arrays once; several per thread even out loaded and unloaded contacts)
-CHUNKS_PER_THREAD = 4
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
