@@ -187,8 +187,10 @@ def CreateAngularContactBearing(mbs, bearing: Bearing | BearingSetup | str = REF
         and the contacts' oils, s (default :data:`~exudyn_bearing.model.thermal_nodes.UPDATE_PERIOD`).
     recordStates : bool
         Add a sensor storing the bearing's node states at every sensor write period, from
-        which :meth:`BearingHandle.Results` computes all outputs afterwards (costs nothing
-        while integrating beyond storing one vector).
+        which :meth:`BearingHandle.Results` computes all outputs afterwards, with the contacts'
+        traction the run computed there (:mod:`exudyn_bearing.model.recorded_traction`): ~10 µs
+        and ~1 KB per written state for 16 balls beside the state's ~2 KB. A scene that never
+        asks for the results (a vibration scene reading its housing sensors) can pass False.
     show : bool
         Add simple graphics (balls).
 

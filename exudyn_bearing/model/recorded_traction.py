@@ -67,13 +67,15 @@ class RecordedTraction:
     def __len__(self) -> int:
         return len(self._rows)
 
-    def _key(self, row, t) -> bytes:
+    def _key(self, row, t, race_speeds=None) -> bytes:
+        """The digest of a state ``row`` at ``t`` s with the kinematic races' ``race_speeds``
+        (2, 3) rad/s (None: computed) and the physics now."""
         comp = self.compiled
         if self._physics[0] is not comp._physics_tuple:
             self._physics = (comp._physics_tuple, physics_fingerprint(comp._physics_tuple))
         hasher = hashlib.blake2b(np.ascontiguousarray(row, dtype=np.float64).tobytes(), digest_size=16)
         hasher.update(np.float64(t).tobytes())
-        hasher.update(comp.fixed_omega(t).tobytes())
+        hasher.update((comp.fixed_omega(t) if race_speeds is None else race_speeds).tobytes())
         hasher.update(self._physics[1])
         return hasher.digest()
 
@@ -83,8 +85,11 @@ class RecordedTraction:
         ``q`` (without the reference) and ``q_t``, the state's own; returns whether it was. A
         state not kept drops what an earlier recording of it kept."""
         comp = self.compiled
-        key = self._key(row, t)
-        if not (t == comp.last_t and np.array_equal(q, comp.last_q) and np.array_equal(q_t, comp.last_q_t)):
+        inputs = comp._time_inputs  # ((t, force function), the races' speeds then, ...) of the last evaluation
+        key = self._key(row, t, inputs[1] if len(inputs) > 1 and inputs[0][0] == t else None)
+        # byte for byte (a failed evaluation left NaN there, which equals nothing)
+        if not (t == comp.last_t and np.asarray(q, dtype=np.float64).tobytes() == comp.last_q.tobytes()
+                and np.asarray(q_t, dtype=np.float64).tobytes() == comp.last_q_t.tobytes()):
             self._rows.pop(key, None)
             return False
         index = self._rows.setdefault(key, len(self._rows))
