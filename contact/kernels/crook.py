@@ -453,6 +453,13 @@ def _crook_many_prange(ux, uy, om, a, b, pm, hh, ent, flat_law, tables, out, chu
 #: and several per thread even out loaded and unloaded contacts
 CHUNKS_PER_THREAD = 4
 
+
+def thread_chunks(n: int) -> int:
+    """Chunks for a threaded loop over ``n`` contacts: :data:`CHUNKS_PER_THREAD` per numba
+    thread, at most ``n`` (counted here, in Python: ``numba.get_num_threads()`` inside a kernel
+    makes it uncachable)."""
+    return min(n, CHUNKS_PER_THREAD * numba.get_num_threads())
+
 #: contacts from which :func:`crook_fast` spreads its loop over numba's threads (a recorded
 #: run's outputs: the reference bearing's 0.1 s, 32 000 contacts, 0.151 -> 0.10 s on 2 cores;
 #: one state's 32 contacts stay on one thread)
@@ -475,8 +482,7 @@ def crook_fast(u_x, u_y, omega_s, a, b, p_max, h, lubricant, order=16, limiting_
     # the race kernels do (exudyn_bearing.model.compiled: numba's workqueue layer serves one
     # caller at a time)
     if n >= PARALLEL_CONTACTS and threading.current_thread() is threading.main_thread():
-        chunks = min(n, CHUNKS_PER_THREAD * numba.get_num_threads())
-        _crook_many_prange(*args, ent, tuple(law), crook_tables(order), out, chunks)
+        _crook_many_prange(*args, ent, tuple(law), crook_tables(order), out, thread_chunks(n))
     else:
         _crook_many(*args, ent, law, crook_tables(order), out)
     return out

@@ -13,13 +13,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import get_num_threads, njit, prange
+from numba import njit, prange
 
 from ..film import central_film
 from ..hertz import fit_ellipticity, fit_first_integral, fit_second_integral, max_pressure_of, semi_axis_of, stiffness_of
 from ..surface import SurfaceRecord
 from ..terms import ContactState, TermRecord, ball_surface_height, contact_loads, film_factor, surface_height
-from .crook import CHUNKS_PER_THREAD, crook_one, crook_scratch
+from .crook import crook_one, crook_scratch, thread_chunks
 from .records import LawRecord
 
 __all__ = ["race_contacts", "race_contacts_at", "race_contacts_parallel", "rotation_matrices"]
@@ -341,5 +341,5 @@ def race_contacts_parallel(balls, frames, geometry, laws, tables, terms, out, to
     if len(terms.registered) > 0:
         race_contacts_at(balls, frames, geometry, laws, tables, terms, out, todo)
         return
-    chunks = min(todo.shape[0], CHUNKS_PER_THREAD * get_num_threads())  # (in Python: numba cannot cache it inside)
-    _race_contacts_prange(balls, frames, geometry, (*laws[0], *laws[1]), tables, _flat_terms(terms), out, todo, chunks)
+    _race_contacts_prange(balls, frames, geometry, (*laws[0], *laws[1]), tables, _flat_terms(terms), out, todo,
+                          thread_chunks(todo.shape[0]))
