@@ -234,13 +234,43 @@ def test_race_translation_columns_from_the_balls_match_perturbed_races(name, whi
         assert np.max(np.abs(fast[np.ix_(rows, cols)] - ref[np.ix_(rows, cols)])) < tol * scale
 
 
-def test_race_translation_columns_leave_frictionless_balls_without_moment():
+@pytest.mark.parametrize("name", ["axial, rigid cage, drag", "combined load", "pocket play, free outer race",
+                                  "land friction, outer-guided cage", "ball defects, combined load"])
+def test_combined_columns_match_the_separate_differences(name):
+    """At a step's ratio f_qt/f_q = γ' (1.875e4 1/s: generalized-alpha at 1e-4 s, ρ∞ = 0.5) the
+    compiled Jacobian takes a coordinate whose position and velocity columns both remain as
+    one column whose states move the coordinate by c f_q and its velocity by c f_qt (MODEL.md
+    §10); the numpy path differences them apart, the race translations by moving the races.
+    Equal to the finite-difference noise of :func:`_assert_jacobian_matches_numpy` (the
+    position step is ~half the numpy path's there); with the balls' pits the ball rotations
+    are combined too. A columns' weight or a combined column's position step taken twice or
+    left out misses by the whole position part (the contact stiffness, ~1e8 N/m against ~1e6
+    N s/m × γ')."""
+    from exudyn_bearing.jacobian.kernels import COMBINED
+
+    _sc, con, q, qt = _scene(**SCENES_RACES[name])
+    f_q, f_qt = 2.0, 2.0 * 1.875e4  # f_q other than 1: a weight taken as f_q would show
+    fast = con.jacobian(0.01, q, qt, f_q, f_qt)
+    kinds = jacobian_columns(con, combined=True)["arrays"][2]
+    assert np.count_nonzero(kinds == COMBINED) >= 3
+    kernel, con._compiled = con._compiled, None
+    try:
+        ref = con.jacobian(0.01, q, qt, f_q, f_qt)
+    finally:
+        con._compiled = kernel
+    _assert_jacobian_matches_numpy(fast, ref, con)
+
+
+@pytest.mark.parametrize("f_qt", [0.0, 1.875e4])
+def test_race_translation_columns_leave_frictionless_balls_without_moment(f_qt):
     """Without traction the contact forces pass through the ball centres: moving a race
     turns no ball. The compiled race columns recover each contact's moment from the race's
     reaction -A^T (l x F + M) with l = c - x_race, whose change holds e_k x F as well; left
-    out, the balls' moment rows would carry |F| (~1e2 N) where they must vanish."""
+    out, the balls' moment rows would carry |F| (~1e2 N) where they must vanish. From the
+    position columns (f_qt = 0) and from the combined ones (f_qt = γ' at 1e-4 s), whose
+    position part moves by c f_q."""
     _sc, con, q, qt = _scene(**SCENES["no traction"])
-    jac = con.jacobian(0.01, q, qt, 1.0, 0.0)
+    jac = con.jacobian(0.01, q, qt, 1.0, f_qt)
     s = con.layout["inner"]
     assert s in jacobian_columns(con)["chain"]
     balls = np.asarray(con.layout["balls"])

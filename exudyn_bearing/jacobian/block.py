@@ -3,6 +3,8 @@
 cage only, so one perturbation of the same coordinate of all balls gives every ball's block."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from contact.kinematics import rotation_matrices
@@ -33,6 +35,10 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     (:func:`~exudyn_bearing.jacobian.kernels.ball_rotation_columns`,
     :func:`~exudyn_bearing.jacobian.kernels.race_translation_columns`; MODEL.md §10); the numpy
     path (the reference) perturbs them.
+    Where f_q and f_qt are both non-zero (a dynamic step) the compiled path takes a
+    coordinate whose position and velocity columns both remain as one combined column: its
+    state moves the coordinate by c f_q and its velocity by c f_qt, and the quotient is the
+    column itself (MODEL.md §10), one state instead of two.
     Forward differences; all perturbed states go through ONE batched evaluation (per-call
     overhead dominates at 32 contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
     like the slots.
@@ -58,20 +64,29 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     n6 = 6 * con.n_nodes
     if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel)) and np.all(np.isfinite(wl))):
         return np.full((n6, n6), np.nan)
-    spec = jacobian_columns(con)
+    compiled = con._compiled is not None
+    # Exudyn asks for one combination of the two derivatives: a state moving a coordinate and
+    # its velocity in that ratio gives its column in one difference quotient (MODEL.md §10)
+    combine = compiled and f_q != 0.0 and f_qt != 0.0 and math.isfinite(f_q) and math.isfinite(f_qt)
+    spec = jacobian_columns(con, combined=combine)
     columns, balls, others, ball_slots, coupled = (spec[k] for k in ("columns", "balls", "others", "ball_slots",
                                                                       "coupled"))
     turn = spec["turn"].get(eps_rotation)
     if turn is None:  # exp(eps e_k~), k = 0, 1, 2
         turn = spec["turn"].setdefault(eps_rotation, rotation_matrices(eps_rotation * np.eye(3)))
-    if con._compiled is not None:  # the same in compiled loops (~1.3 ms of numpy per Jacobian)
-        arrays = spec["arrays"]  # group, k, velocity?, group mask, block?, slot, balls, others
+    if compiled:  # the same in compiled loops (~1.3 ms of numpy per Jacobian)
+        arrays = spec["arrays"]  # group, k, kind, group mask, block?, slot, balls, others
         nb = 1 + len(arrays[0])
         p2, r2 = np.empty((nb,) + pos.shape), np.empty((nb,) + rot.shape)
         v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
+        # a combined column's step c: the velocity moves by c f_qt (the velocity step), the
+        # coordinate by c f_q, at most the coordinate's own step
+        c_t = min(eps_velocity / abs(f_qt), eps_position / abs(f_q)) if combine else 0.0
+        c_r = min(eps_angular / abs(f_qt), eps_rotation / abs(f_q)) if combine else 0.0
+        turns = np.stack((turn, rotation_matrices(c_r * f_q * np.eye(3)) if combine else turn))
+        eps = np.array([eps_position, eps_rotation, eps_velocity, eps_angular, c_t, c_r, f_q, f_qt])
         steps = kernels.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl), arrays[:4],
-                                        np.array([eps_position, eps_rotation, eps_velocity, eps_angular]), turn,
-                                        (p2, r2, v2, w2))
+                                        eps, turns, (p2, r2, v2, w2))
         raw = {"slots": spec["chain"]} if spec["chain"].size else None
         out, react, _, _, _ = con._batch_forces(t, p2, r2, v2, w2, same_contacts=spec["same"], raw_reactions=raw)
         jac = np.empty((n6, n6))
@@ -80,8 +95,9 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
             kernels.ball_rotation_columns(out, react, steps, spec["wcol"], arrays[4], spec["ball_group"], arrays[6],
                                           arrays[7], np.ascontiguousarray(wl), f_q, jac)
         if raw is not None:
-            kernels.race_translation_columns(raw["react"], steps, spec["tcol"], spec["chain"], spec["chain_rows"],
-                                             arrays[6], pos, np.ascontiguousarray(rot), f_q, f_qt, jac)
+            kernels.race_translation_columns(raw["react"], steps, spec["tcol"], arrays[2], spec["chain"],
+                                             spec["chain_rows"], arrays[6], pos, np.ascontiguousarray(rot), f_q,
+                                             f_qt, jac)
         return jac
     nb = 1 + len(columns)
     p2, r2 = np.repeat(pos[None], nb, axis=0), np.repeat(rot[None], nb, axis=0)
@@ -116,12 +132,15 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
             target[:, 6 * group[0] + k] = (d_out[i] + d_react[i].sum(axis=0)).ravel()
     return -(f_q * dq + f_qt * dv)
 
-def jacobian_columns(con) -> dict:
+def jacobian_columns(con, combined: bool = False) -> dict:
     """The block Jacobian's columns (group of slots, coordinate k, 'q' or 'v'), fixed by
     the layout and the held races, as lists and as arrays for the compiled loops
-    (cached)."""
-    if con._jac_spec is not None:
-        return con._jac_spec
+    (cached). ``combined``: the compiled loops take a coordinate whose position and velocity
+    columns both remain as one combined column ('qv', :data:`~exudyn_bearing.jacobian.kernels.COMBINED`)."""
+    if con._jac_spec is None:
+        con._jac_spec = {}
+    if combined in con._jac_spec:
+        return con._jac_spec[combined]
     balls = np.asarray(con.layout["balls"])
     ball_slots = set(balls.tolist())
     coupled = con.cage.kind == "spring-chain"
@@ -151,13 +170,18 @@ def jacobian_columns(con) -> dict:
             continue
         chain.append(slot)
     kept = [c for c in kept if not (int(c[1][0]) in chain and c[2] < 3)]
+    if combined:  # one 'qv' column where both remain, in the place of the 'q' one
+        both = {(c[0], c[2]) for c in kept if c[3] == "q"} & {(c[0], c[2]) for c in kept if c[3] == "v"}
+        kept = [(gi, group, k, "qv" if (gi, k) in both else which) for gi, group, k, which in kept
+                if not (which == "v" and (gi, k) in both)]
     wcol = -np.ones((len(groups), 3), dtype=np.int64)
     tcol = -np.ones((2, 3), dtype=np.int64)  # the ball group's position and velocity columns
     for i, (gi, _group, k, which) in enumerate(kept):
         if is_ball[gi] and which == "v" and k >= 3:
             wcol[gi, k - 3] = i
         if is_ball[gi] and k < 3 and not coupled:
-            tcol[int(which == "v"), k] = i
+            for kind in (0, 1) if which == "qv" else (int(which == "v"),):
+                tcol[kind, k] = i
     ball_group = np.empty(len(balls), dtype=np.int64)
     index = {int(b): j for j, b in enumerate(balls)}
     for gi, group in enumerate(groups):
@@ -175,13 +199,14 @@ def jacobian_columns(con) -> dict:
 
     same = np.array([[False, False]] + [unchanged(int(group[0])) if int(group[0]) not in ball_slots
                                         else [False, False] for _, group, _, _ in kept])
+    kinds = {"q": kernels.POSITION, "v": kernels.VELOCITY, "qv": kernels.COMBINED}
     arrays = (np.array([c[0] for c in kept], dtype=np.int64), np.array([c[2] for c in kept], dtype=np.int64),
-              np.array([c[3] == "v" for c in kept], dtype=np.bool_), mask, block,
+              np.array([kinds[c[3]] for c in kept], dtype=np.int64), mask, block,
               np.array([int(g[0]) for g in groups], dtype=np.int64), balls.astype(np.int64),
               np.array(others, dtype=np.int64))
-    con._jac_spec = dict(columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots,
-                          coupled=coupled, same=same, arrays=arrays, wcol=wcol, ball_group=ball_group,
-                          turn={}, chain=np.array(chain, dtype=np.int64), tcol=tcol, material=material,
-                          chain_rows=np.array([6 if con.held.get(s_) is None else 3 for s_ in chain],
-                                              dtype=np.int64))
-    return con._jac_spec
+    con._jac_spec[combined] = dict(
+        columns=[c[1:] for c in columns], balls=balls, others=others, ball_slots=ball_slots, coupled=coupled,
+        same=same, arrays=arrays, wcol=wcol, ball_group=ball_group, turn={}, chain=np.array(chain, dtype=np.int64),
+        tcol=tcol, material=material,
+        chain_rows=np.array([6 if con.held.get(s_) is None else 3 for s_ in chain], dtype=np.int64))
+    return con._jac_spec[combined]

@@ -6,18 +6,26 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["jacobian_states", "jacobian_assemble", "ball_rotation_columns", "race_translation_columns"]
+__all__ = ["POSITION", "VELOCITY", "COMBINED", "jacobian_states", "jacobian_assemble", "ball_rotation_columns",
+           "race_translation_columns"]
+
+#: a column's kind: its states move the coordinate, its velocity, or both at once in the ratio
+#: f_q : f_qt of the Jacobian Exudyn asks for (MODEL.md §10)
+POSITION, VELOCITY, COMBINED = 0, 1, 2
 
 
 @njit(cache=True, error_model="numpy")
 def jacobian_states(pos, rot, vel, w_local, columns, eps, turn, states):
     """The block Jacobian's states (:func:`exudyn_bearing.jacobian.block_jacobian`): state 0 the
-    base, state i + 1 column i's perturbation of every node of its group — position ``eps[0]``,
-    rotation A -> A turn[k - 3] (``turn`` = exp(eps[1] e_k~)), velocity ``eps[2]``, local
-    angular velocity ``eps[3]``. ``columns`` = (group, coordinate k, velocity column?, group
-    mask (groups, n)) per column; writes ``states`` = (p2, r2, v2 and the GLOBAL angular
-    velocities w2), B = 1 + columns; returns the step of each column."""
-    col_group, col_k, col_v, group_mask = columns
+    base, state i + 1 column i's perturbation of every node of its group. ``columns`` =
+    (group, coordinate k, kind, group mask (groups, n)) per column, kind :data:`POSITION`
+    (position ``eps[0]``, rotation A -> A turn[0, k - 3] with turn[0] = exp(eps[1] e_k~)),
+    :data:`VELOCITY` (velocity ``eps[2]``, local angular velocity ``eps[3]``) or
+    :data:`COMBINED` (step c = ``eps[4]`` (translation) or ``eps[5]`` (rotation): the coordinate
+    by c f_q — A -> A turn[1, k - 3] — and its velocity by c f_qt, f_q, f_qt = ``eps[6:8]``);
+    writes ``states`` = (p2, r2, v2 and the GLOBAL angular velocities w2), B = 1 + columns;
+    returns the step of each column (the divisor of its difference quotient)."""
+    col_group, col_k, col_kind, group_mask = columns
     p2, r2, v2, w2 = states
     n = pos.shape[0]
     ncol = col_group.shape[0]
@@ -28,22 +36,33 @@ def jacobian_states(pos, rot, vel, w_local, columns, eps, turn, states):
         v2[b] = vel
         wl[b] = w_local
     steps = np.empty(ncol)
+    f_q, f_qt = eps[6], eps[7]
     for i in range(ncol):
         k = col_k[i]
-        steps[i] = (eps[2] if k < 3 else eps[3]) if col_v[i] else (eps[0] if k < 3 else eps[1])
+        kind = col_kind[i]
+        if kind == COMBINED:
+            steps[i] = eps[4] if k < 3 else eps[5]
+        elif kind == VELOCITY:
+            steps[i] = eps[2] if k < 3 else eps[3]
+        else:
+            steps[i] = eps[0] if k < 3 else eps[1]
+        move = steps[i] * f_q if kind == COMBINED else steps[i]  # the coordinate's step
+        speed = steps[i] * f_qt if kind == COMBINED else steps[i]  # the velocity's step
         for s in range(n):
             if not group_mask[col_group[i], s]:
                 continue
-            if col_v[i]:
+            if kind != POSITION:
                 if k < 3:
-                    v2[i + 1, s, k] += eps[2]
+                    v2[i + 1, s, k] += speed
                 else:
-                    wl[i + 1, s, k - 3] += eps[3]
-            elif k < 3:
-                p2[i + 1, s, k] += eps[0]
+                    wl[i + 1, s, k - 3] += speed
+            if kind == VELOCITY:
+                continue
+            if k < 3:
+                p2[i + 1, s, k] += move
             else:
                 a = r2[i + 1, s].copy()
-                e = turn[k - 3]
+                e = turn[1 if kind == COMBINED else 0, k - 3]
                 for r in range(3):
                     for c in range(3):
                         r2[i + 1, s, r, c] = a[r, 0] * e[0, c] + a[r, 1] * e[1, c] + a[r, 2] * e[2, c]
@@ -55,18 +74,30 @@ def jacobian_states(pos, rot, vel, w_local, columns, eps, turn, states):
 
 
 @njit(cache=True, error_model="numpy")
+def column_weight(kind, f_q, f_qt):
+    """The factor of a column's difference quotient in -(f_q dF/dq + f_qt dF/dq_t): f_q for a
+    position column, f_qt for a velocity column, 1 for a combined one (its states moved both
+    by the ratio f_q : f_qt)."""
+    if kind == POSITION:
+        return f_q
+    if kind == VELOCITY:
+        return f_qt
+    return 1.0
+
+
+@njit(cache=True, error_model="numpy")
 def jacobian_assemble(out, react, steps, columns, f_q, f_qt, jac):
     """-(f_q dF/dq + f_qt dF/dq_t) from the forces of :func:`jacobian_states`' states
-    (out (B, n, 6), per-ball race/cage parts react (B, Z, n, 6)) into ``jac`` (6n, 6n):
+    (out (B, n, 6), per-ball race/cage parts react (B, Z, n, 6)) into ``jac`` (6n, 6n),
+    each column's quotient weighted by :func:`column_weight`:
     a column of a block group (the balls, each coupled only to itself and the races/cage)
     fills each ball's own block and that ball's part of the race/cage rows; any other
-    column is the whole force change. ``columns`` = (group, coordinate k, velocity column?)
-    per column, (block group?, slot) per group, the balls' slots and the other slots."""
-    col_group, col_k, col_v, group_block, group_slot, balls, others = columns
+    column is the whole force change. ``columns`` = (group, coordinate k, kind) per column, (block group?, slot) per group, the balls' slots and the other slots."""
+    col_group, col_k, col_kind, group_block, group_slot, balls, others = columns
     jac[:] = 0.0
     n = out.shape[1]
     for i in range(col_group.shape[0]):
-        fac = (f_qt if col_v[i] else f_q) / steps[i]
+        fac = column_weight(col_kind[i], f_q, f_qt) / steps[i]
         k = col_k[i]
         g = col_group[i]
         if group_block[g]:
@@ -145,10 +176,11 @@ def ball_rotation_columns(out, react, steps, wcol, group_block, ball_group, ball
 
 
 @njit(cache=True, error_model="numpy")
-def race_translation_columns(react, steps, tcol, chain, chain_rows, balls, pos, rot, f_q, f_qt, jac):
+def race_translation_columns(react, steps, tcol, kinds, chain, chain_rows, balls, pos, rot, f_q, f_qt, jac):
     """Adds the translation columns of the races ``chain`` (node slots) to ``jac`` from the
     balls' translation columns of :func:`jacobian_states`' states (``tcol[0, k]``, ``tcol[1, k]``:
-    the ball group's position and velocity column k) instead of six more perturbed states per
+    the ball group's position and velocity column k, both the same column where it is
+    :data:`COMBINED`; ``kinds`` the columns' kinds) instead of six more perturbed states per
     race. A ball-race contact depends on the ball's and the race's positions (and velocities)
     only through their differences, so moving race s by e_k changes ball j's contact as moving
     ball j by -e_k: its force F and moment M on the ball (ball rows: -(dF, A_b^T dM)) and its
@@ -158,10 +190,14 @@ def race_translation_columns(react, steps, tcol, chain, chain_rows, balls, pos, 
     for m in range(chain.shape[0]):
         s = chain[m]
         A = rot[s]
-        for kind in range(2):
+        for twice in range(2):
             for k in range(3):
-                i = tcol[kind, k]
-                fac = (f_q if kind == 0 else f_qt) / steps[i]
+                i = tcol[twice, k]
+                if twice == 1 and i == tcol[0, k]:  # a combined column: taken once
+                    continue
+                kind = kinds[i]
+                fac = column_weight(kind, f_q, f_qt) / steps[i]
+                moved = 0.0 if kind == VELOCITY else steps[i] * (f_q if kind == COMBINED else 1.0)
                 col = 6 * s + k
                 for jb in range(balls.shape[0]):
                     b = balls[jb]
@@ -182,9 +218,9 @@ def race_translation_columns(react, steps, tcol, chain, chain_rows, balls, pos, 
                     dM[0] -= lever[1] * dF[2] - lever[2] * dF[1]
                     dM[1] -= lever[2] * dF[0] - lever[0] * dF[2]
                     dM[2] -= lever[0] * dF[1] - lever[1] * dF[0]
-                    if kind == 0:
+                    if moved != 0.0:
                         e = np.zeros(3)
-                        e[k] = steps[i]
+                        e[k] = moved
                         dM[0] -= e[1] * F[2] - e[2] * F[1]
                         dM[1] -= e[2] * F[0] - e[0] * F[2]
                         dM[2] -= e[0] * F[1] - e[1] * F[0]
