@@ -61,9 +61,14 @@ def test_each_source_grows_with_speed_as_its_law_says():
     a ∝ Q^(1/3) and u_m ∝ n, as n^(5/3 + q/3) to n^(7/4 + q/3), q the race's load exponent
     (measured: inner 1.64 in 1.62–1.70; outer 2.31 against 2.08–2.16, the outer contact angle
     falling with speed raises its u_m and R_x: band +0.25 there); the cage land's Petroff
-    shear T ∝ Δω at fixed eccentricity, its loss T Δω ∝ n² (band 1.8–2.5: the eccentricity
-    rises with speed; measured 2.18 in these 10-ms runs, the cage still near its centre, with
-    and without the land film's force); the traction and spin heat grows."""
+    shear T = k Δω/√(1 − ε²), its loss T Δω: with the eccentricity factor taken out (the
+    run's own ε), the land's loss √(1 − ε²) ∝ Δω² ∝ n² (band 1.8–2.5; measured 2.19, and 2.18
+    in earlier runs whose cage stayed centred: ~0.2 above Petroff's 2 not traced here; the
+    pockets' loss, the rest of the cage's, only has to grow). The eccentricity itself is not
+    fixed: at
+    48 000 rpm the cage leaves its centre within 10–20 ms and settles at ~130 W against
+    ~68 W centred, in runs converged to 1e-6 as at the default tolerance, with either Newton
+    start; the traction and spin heat grows."""
     from exudyn_bearing.cage import CageModel
 
     law = ContactLaw(rolling_resistance=True)
@@ -81,6 +86,8 @@ def test_each_source_grows_with_speed_as_its_law_says():
             contacts = getattr(res, race)
             loss[race + "_rolling"] = float(np.mean(np.sum(contacts["rolling_loss"][last], axis=1)))
             loss[race + "_load"] = float(np.mean(contacts["load"][last]))
+        eps = np.minimum(res.cage_eccentricity[last] / (0.5 * cage.guide_clearance), 0.95)
+        loss["land_centred"] = float(np.mean(res.land_loss[last] * np.sqrt(1.0 - eps ** 2)))
         runs[rpm] = loss, float(np.mean(np.sum(np.abs(speed) ** 3, axis=1)))
     (low, cube_low), (high, cube_high) = runs[28000.0], runs[48000.0]
 
@@ -93,7 +100,8 @@ def test_each_source_grows_with_speed_as_its_law_says():
         got = exponent(race + "_rolling")
         assert 5 / 3 + q / 3 - 0.05 < got < 7 / 4 + q / 3 + extra, (race, got, q)
     assert low["inner_rolling"] + low["outer_rolling"] == pytest.approx(low["rolling_resistance"], rel=1e-9)
-    assert 1.8 < exponent("cage") < 2.5, exponent("cage")
+    assert 1.8 < exponent("land_centred") < 2.5, exponent("land_centred")
+    assert high["cage"] > low["cage"]
     assert high["traction"] > low["traction"] > 0
 
 

@@ -282,7 +282,8 @@ def _add_connector(mbs, connector, nodes, layout, inner, held, steady):
                                               jacobianUserFunction=jacobian_user_function))
     # the Newton start from the previous acceleration (MODEL.md §10b), for plain SolveDynamic
     # scenes too; SolverSettings(predictor=False) turns it off for a run_solver run
-    install_predictor(mbs, nodes, steady_start=steady, start_residual=start)
+    install_predictor(mbs, nodes, steady_start=steady, start_residual=start,
+                      orbit=([nodes[j] for j in layout["balls"]], connector.origin, connector.axis))
     return contact
 
 

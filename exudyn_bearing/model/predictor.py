@@ -32,7 +32,14 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
+from contact import kernels
+from contact.kernel_cache import drop_stale
+from contact.kernels.race import rotation_matrices
+
 from ..races import node_rows
+
+# _carry_orbits calls the contact/ kernels' rotation_matrices: recompile it when they changed
+drop_stale(__file__, [__file__, *kernels.SOURCES])
 
 __all__ = ["NewtonPredictor", "compose_rotation_vectors", "install_predictor"]
 
@@ -98,6 +105,60 @@ def _predict_rows(q, v, a_n, starts, ref_rot, beta_prime, gamma_prime, a_out):
     return True
 
 
+@njit(cache=True)
+def _turn_about(x, k, c, s, out):
+    """``x`` (3,) turned about the unit axis ``k`` by the angle whose cosine and sine are c, s
+    (Rodrigues), into ``out``."""
+    kx = (1.0 - c) * (k[0] * x[0] + k[1] * x[1] + k[2] * x[2])
+    x0, x1, x2 = x[0], x[1], x[2]  # out may be x
+    out[0] = c * x0 + s * (k[1] * x2 - k[2] * x1) + kx * k[0]
+    out[1] = c * x1 + s * (k[2] * x0 - k[0] * x2) + kx * k[1]
+    out[2] = c * x2 + s * (k[0] * x1 - k[1] * x0) + kx * k[2]
+
+
+@njit(cache=True)
+def _carry_orbits(q0, v0, q, ref, a_n, starts, origin, axis, h, out):
+    """In place on ``out`` (a copy of ``a_n``): the accelerations of the ball nodes at
+    ``starts`` carried along their orbits over the step h (MODEL.md §10b). The node's orbital
+    rate about the bearing axis, Ω = ((r × v)·k)/|r|² with r the ball centre's distance from
+    the axis (through ``origin``, along the unit ``axis``) and v its velocity at the step's
+    start (``q0`` + ``ref``, ``v0``), turns the translational acceleration by Ω h about k; the
+    angular acceleration, local in the body frame A0 at the step's start, is turned by Ω h as
+    a global vector and read in the frame A1 of Exudyn's start ``q``:
+    ω̇_l' = A1ᵀ R_k(Ω h) A0 ω̇_l. Rotation vectors: ``ref`` + ``q0``, ``ref`` + ``q``. Exact for
+    a ball on a uniform orbit whose angular velocity turns with it."""
+    nu = np.empty((2, 3))
+    g = np.empty(3)
+    turned = np.empty(3)
+    for j in range(starts.shape[0]):
+        s = starts[j]
+        k = axis[j]
+        r = np.empty(3)
+        along = 0.0
+        for i in range(3):
+            r[i] = q0[s + i] + ref[s + i] - origin[j, i]
+            along += r[i] * k[i]
+        r2 = 0.0
+        for i in range(3):
+            r[i] -= along * k[i]
+            r2 += r[i] * r[i]
+        if not r2 > 0.0:
+            continue
+        w = ((r[1] * v0[s + 2] - r[2] * v0[s + 1]) * k[0] + (r[2] * v0[s] - r[0] * v0[s + 2]) * k[1]
+             + (r[0] * v0[s + 1] - r[1] * v0[s]) * k[2]) / r2
+        c, sn = math.cos(w * h), math.sin(w * h)
+        _turn_about(a_n[s:s + 3], k, c, sn, out[s:s + 3])
+        for i in range(3):
+            nu[0, i] = ref[s + 3 + i] + q0[s + 3 + i]
+            nu[1, i] = ref[s + 3 + i] + q[s + 3 + i]
+        frames = rotation_matrices(nu)
+        for i in range(3):
+            g[i] = frames[0, i, 0] * a_n[s + 3] + frames[0, i, 1] * a_n[s + 4] + frames[0, i, 2] * a_n[s + 5]
+        _turn_about(g, k, c, sn, turned)
+        for i in range(3):
+            out[s + 3 + i] = frames[1, 0, i] * turned[0] + frames[1, 1, i] * turned[1] + frames[1, 2, i] * turned[2]
+
+
 def compose_rotation_vectors(theta, omega):
     """Rotation vectors of R(θ) exp(ω̃): the rotations ``theta`` (n, 3) composed with the
     local incremental rotations ``omega`` (n, 3), by the formula of Exudyn's Lie-group
@@ -144,20 +205,33 @@ class NewtonPredictor:
         self.steady_start = True
         #: (StartResidual, its connector's nodes) told of each predicted step
         self.start_residuals: list = []
+        #: (ball nodes, origin, unit axis) of each bearing whose balls orbit (:func:`_carry_orbits`)
+        self.orbits: list = []
         self._iterations = 0  # Newton iterations of the current step attempt
         self._jacobians = -1  # the solver's Jacobian count at its start
         self._age = 0  # step attempts the current Jacobian has served without another
+        self._applied = None  # the step attempt's prediction, once set
+        self._last_call = None  # (t, newtonIt, discontinuousIt) of the last call
+        #: restarts of Newton from Exudyn's start sent to the predicted iterate instead
+        self.restarts = 0
 
-    def add_nodes(self, nodes, steady_start: bool = False, start_residual=None) -> None:
+    def add_nodes(self, nodes, steady_start: bool = False, start_residual=None, orbit=None) -> None:
         """Predict ``nodes`` too; each node once (bearings on one shaft share its node, and
         a node moved twice would leave q, v and a inconsistent). ``steady_start``: these
         nodes start from a steady state (their initial accelerations are the motion's).
         ``start_residual``: the :class:`~exudyn_bearing.model.start_residual.StartResidual`
-        of the connector on exactly these nodes, told each predicted iterate."""
+        of the connector on exactly these nodes, told each predicted iterate. ``orbit``:
+        (ball nodes, the bearing's origin, its unit axis) — those nodes' accelerations are
+        carried along their orbits about that axis (:func:`_carry_orbits`)."""
         self.nodes.extend(n for n in dict.fromkeys(int(n) for n in nodes) if n not in self.nodes)
         self.steady_start = self.steady_start and steady_start
         if start_residual is not None:
             self.start_residuals.append((start_residual, [int(n) for n in nodes]))
+        if orbit is not None:
+            balls, origin, axis = orbit
+            axis = np.asarray(axis, dtype=float)
+            self.orbits.append(([int(n) for n in balls], np.asarray(origin, dtype=float),
+                                axis / np.linalg.norm(axis)))
         self._indices = None
 
     def _coordinates(self, mbs):
@@ -169,7 +243,13 @@ class NewtonPredictor:
             # vectors are set as they are, no other item's Newton iterate to keep
             everything = np.array_equal(np.sort(rows), np.arange(ref.size))
             own = [node_rows(mbs, nodes) for _, nodes in self.start_residuals]
-            self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything, own)
+            orbits = (np.concatenate([node_rows(mbs, balls)[::6] for balls, _, _ in self.orbits]).astype(np.int64)
+                      if self.orbits else np.zeros(0, dtype=np.int64),
+                      np.concatenate([np.tile(o, (len(b), 1)) for b, o, _ in self.orbits]) if self.orbits
+                      else np.zeros((0, 3)),
+                      np.concatenate([np.tile(k, (len(b), 1)) for b, _, k in self.orbits]) if self.orbits
+                      else np.zeros((0, 3)), ref)
+            self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything, own, orbits)
         return self._indices
 
     def __call__(self, mbs, t, newtonIt, discontinuousIt):
@@ -178,9 +258,13 @@ class NewtonPredictor:
         if newtonIt == 0:
             solver = mbs.sys.get("dynamicSolver")
             self._count_cut(solver, t)
+        # Exudyn calls again with the same iteration after restarting the step from its start
+        restart = newtonIt >= 1 and (t, newtonIt, discontinuousIt) == self._last_call
+        self._last_call = (t, newtonIt, discontinuousIt)
         if not self.enabled or not self.nodes:
             return
         if newtonIt == 0:
+            self._applied = None
             # the last attempt converged slowly on a Jacobian that had served many steps:
             # refresh it (MODEL.md §10b)
             jacobians = int(solver.it.newtonJacobiCount) if solver is not None else 0
@@ -193,29 +277,42 @@ class NewtonPredictor:
                 self._tell_start_residuals(t)
         elif newtonIt == 1 and self._pending is not None:
             pending, self._pending = self._pending, None
-            q_new, v_new, a_new = pending.q, pending.v, pending.a
             if pending.new_step or pending.refresh:
                 # Exudyn keeps the last Jacobian across a change of step size, whose mass
                 # part scales with 1/h²: from the predicted iterate that stale matrix
                 # diverges (contraction 2 after the step doubled), so take a fresh one here;
                 # and after a step that needed many iterations (MODEL.md §10b)
                 self._solver.conv.jacobianUpdateRequested = True
-            data = mbs.systemData
-            config = _config().Current
-            _, rows, _, everything, _ = self._indices
-            if not everything:  # other items keep Newton's first iterate
-                q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
-                v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
-                a = np.array(data.GetODE2Coordinates_tt(configuration=config), dtype=float)
-                q[rows], v[rows], a[rows] = q_new[rows], v_new[rows], a_new[rows]
-                q_new, v_new, a_new = q, v, a
-            data.SetODE2Coordinates(q_new, configuration=config)
-            data.SetODE2Coordinates_t(v_new, configuration=config)
-            data.SetODE2Coordinates_tt(a_new, configuration=config)
-            self.shifts += 1
+            self._apply(mbs, pending)
+            self._applied = pending
+        elif restart and self._applied is not None:
+            # Exudyn restarts a diverging modified Newton from its zero-acceleration start
+            # (with a fresh Jacobian): from the predicted iterate instead, once a step
+            # (MODEL.md §10b)
+            self._apply(mbs, self._applied)
+            self._applied = None
+            self.restarts += 1
         else:
             self._pending = None
         self._iterations = max(self._iterations, int(newtonIt))
+
+    def _apply(self, mbs, prediction):
+        """Set the bearings' nodes to ``prediction``'s iterate (q, v, a) in Exudyn's current
+        configuration."""
+        q_new, v_new, a_new = prediction.q, prediction.v, prediction.a
+        data = mbs.systemData
+        config = _config().Current
+        _, rows, _, everything, _, _ = self._indices
+        if not everything:  # other items keep Newton's iterate
+            q = np.array(data.GetODE2Coordinates(configuration=config), dtype=float)
+            v = np.array(data.GetODE2Coordinates_t(configuration=config), dtype=float)
+            a = np.array(data.GetODE2Coordinates_tt(configuration=config), dtype=float)
+            q[rows], v[rows], a[rows] = q_new[rows], v_new[rows], a_new[rows]
+            q_new, v_new, a_new = q, v, a
+        data.SetODE2Coordinates(q_new, configuration=config)
+        data.SetODE2Coordinates_t(v_new, configuration=config)
+        data.SetODE2Coordinates_tt(a_new, configuration=config)
+        self.shifts += 1
 
     def _tell_start_residuals(self, t):
         """Tell each connector's start residual its predicted iterate and increment."""
@@ -261,13 +358,20 @@ class NewtonPredictor:
             self._step_start = step_start
             return None
         self._step_start = step_start
-        starts, _, ref_rot, _, _ = self._coordinates(mbs)
+        starts, _, ref_rot, _, _, orbits = self._coordinates(mbs)
         data = mbs.systemData
         config = _config()
         # Exudyn's start: the previous step's q and v advanced, zero acceleration everywhere
         q = np.array(data.GetODE2Coordinates(configuration=config.Current), dtype=float)
         v = np.array(data.GetODE2Coordinates_t(configuration=config.Current), dtype=float)
         a_n = np.asarray(data.GetODE2Coordinates_tt(configuration=config.StartOfStep), dtype=float)
+        balls, origins, axes, ref = orbits
+        if balls.size:  # the balls' accelerations turn with their orbits (MODEL.md §10b)
+            q0 = np.asarray(data.GetODE2Coordinates(configuration=config.StartOfStep), dtype=float)
+            v0 = np.asarray(data.GetODE2Coordinates_t(configuration=config.StartOfStep), dtype=float)
+            carried = a_n.copy()
+            _carry_orbits(q0, v0, q, ref, a_n, balls, origins, axes, h, carried)
+            a_n = carried
         a = np.zeros_like(q)
         beta, gamma, alpha_m, alpha_f = self._constants
         beta_prime = (1.0 - alpha_m) / (h * h * beta * (1.0 - alpha_f))
@@ -292,13 +396,15 @@ def _config():
     return exu.ConfigurationType
 
 
-def install_predictor(mbs, nodes, steady_start: bool = False, start_residual=None) -> NewtonPredictor:
+def install_predictor(mbs, nodes, steady_start: bool = False, start_residual=None, orbit=None) -> NewtonPredictor:
     """Add ``nodes`` (Lie-group rotation-vector rigid-body nodes of a bearing) to the
     system's :class:`NewtonPredictor`, creating and installing it as the system's
     ``PreNewtonResidualUserFunction`` on first use (a function already set is chained).
     ``steady_start``: the bearing starts from its steady state (then, if all do, the
     scene's first step is predicted too). ``start_residual``: the bearing's
-    :class:`~exudyn_bearing.model.start_residual.StartResidual` (on exactly ``nodes``)."""
+    :class:`~exudyn_bearing.model.start_residual.StartResidual` (on exactly ``nodes``).
+    ``orbit``: (ball nodes, the bearing's origin, its axis), whose accelerations the predictor
+    carries along their orbits."""
     predictor = mbs.variables.get(VARIABLE)
     if not isinstance(predictor, NewtonPredictor):
         try:  # Exudyn 1.13: 0, or {'function': f, 'type': 'Python'}
@@ -310,5 +416,5 @@ def install_predictor(mbs, nodes, steady_start: bool = False, start_residual=Non
         predictor = NewtonPredictor(existing if callable(existing) else None)
         mbs.variables[VARIABLE] = predictor
         mbs.SetPreNewtonResidualUserFunction(predictor)
-    predictor.add_nodes(nodes, steady_start, start_residual)
+    predictor.add_nodes(nodes, steady_start, start_residual, orbit)
     return predictor
