@@ -61,14 +61,14 @@ def test_each_source_grows_with_speed_as_its_law_says():
     a ∝ Q^(1/3) and u_m ∝ n, as n^(5/3 + q/3) to n^(7/4 + q/3), q the race's load exponent
     (measured: inner 1.64 in 1.62–1.70; outer 2.31 against 2.08–2.16, the outer contact angle
     falling with speed raises its u_m and R_x: band +0.25 there); the cage land's Petroff
-    shear T = k Δω/√(1 − ε²), its loss T Δω: with the eccentricity factor taken out (the
-    run's own ε), the land's loss √(1 − ε²) ∝ Δω² ∝ n² (band 1.8–2.5; measured 2.19, and 2.18
-    in earlier runs whose cage stayed centred: ~0.2 above Petroff's 2 not traced here; the
-    pockets' loss, the rest of the cage's, only has to grow). The eccentricity itself is not
-    fixed: at
-    48 000 rpm the cage leaves its centre within 10–20 ms and settles at ~130 W against
-    ~68 W centred, in runs converged to 1e-6 as at the default tolerance, with either Newton
-    start; the traction and spin heat grows."""
+    shear T = k Δω/√(1 − ε²), its loss T Δω. The land's loss in the results holds that shear
+    and its force pair's dissipation (contact, film pressure), which grows with the cage's
+    whirl; with Petroff's eccentricity factor taken out (the run's own ε) it grows as
+    n^2.19 (band 1.8–2.5; 2.18 in earlier runs whose cage stayed centred); the pockets' loss,
+    the rest of the cage's, only has to grow. The eccentricity itself is not fixed: at
+    48 000 rpm the cage leaves its centre within 10–20 ms and settles at ~130 W against ~68 W
+    centred, in runs converged to 1e-6 as at the default tolerance, with either Newton start;
+    the traction and spin heat grows."""
     from exudyn_bearing.cage import CageModel
 
     law = ContactLaw(rolling_resistance=True)

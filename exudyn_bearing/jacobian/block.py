@@ -11,11 +11,15 @@ from contact.kinematics import rotation_matrices
 
 from . import kernels
 
-__all__ = ["JACOBIAN_VELOCITY_STEP", "block_jacobian", "jacobian_columns"]
+__all__ = ["COMBINED_STEP_LIMIT", "JACOBIAN_VELOCITY_STEP", "block_jacobian", "jacobian_columns"]
 
 #: Velocity step of the block Jacobian's difference quotients per m/s of the balls' mean speed
 #: (1e-5 m/s on the reference bearing at 1800 rpm; see :func:`block_jacobian`).
 JACOBIAN_VELOCITY_STEP = 1.6e-6
+#: largest coordinate step of a combined column, in the coordinate's own steps: its velocity
+#: takes its own step, the coordinate f_q/f_qt times that (0.53 nm on the reference bearing at
+#: 1e-4 s); above this (time steps above ~1e-3 s there) the columns stay apart (MODEL.md §10)
+COMBINED_STEP_LIMIT = 10.0
 
 
 def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e-7, eps_velocity=None,
@@ -37,8 +41,9 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
     path (the reference) perturbs them.
     Where f_q and f_qt are both non-zero (a dynamic step) the compiled path takes a
     coordinate whose position and velocity columns both remain as one combined column: its
-    state moves the coordinate by c f_q and its velocity by c f_qt, and the quotient is the
-    column itself (MODEL.md §10), one state instead of two.
+    state moves the velocity by its own step c f_qt and the coordinate by c f_q (at most
+    :data:`COMBINED_STEP_LIMIT` times its own step, else the columns stay apart), and the
+    quotient is the column itself (MODEL.md §10), one state instead of two.
     Forward differences; all perturbed states go through ONE batched evaluation (per-call
     overhead dominates at 32 contacts). Ball j sits in slot j (the builder's layout), so per-ball reactions index
     like the slots.
@@ -66,8 +71,14 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
         return np.full((n6, n6), np.nan)
     compiled = con._compiled is not None
     # Exudyn asks for one combination of the two derivatives: a state moving a coordinate and
-    # its velocity in that ratio gives its column in one difference quotient (MODEL.md §10)
+    # its velocity in that ratio gives its column in one difference quotient (MODEL.md §10).
+    # Its step c keeps the velocity steps; where the coordinates would then move by more than
+    # COMBINED_STEP_LIMIT times their own steps (long time steps), the columns stay apart
     combine = compiled and f_q != 0.0 and f_qt != 0.0 and math.isfinite(f_q) and math.isfinite(f_qt)
+    c_t = eps_velocity / abs(f_qt) if combine else 0.0
+    c_r = eps_angular / abs(f_qt) if combine else 0.0
+    combine = combine and c_t * abs(f_q) <= COMBINED_STEP_LIMIT * eps_position \
+        and c_r * abs(f_q) <= COMBINED_STEP_LIMIT * eps_rotation
     spec = jacobian_columns(con, combined=combine)
     columns, balls, others, ball_slots, coupled = (spec[k] for k in ("columns", "balls", "others", "ball_slots",
                                                                       "coupled"))
@@ -79,10 +90,8 @@ def block_jacobian(con, t, q, q_t, f_q, f_qt, eps_position=1e-9, eps_rotation=1e
         nb = 1 + len(arrays[0])
         p2, r2 = np.empty((nb,) + pos.shape), np.empty((nb,) + rot.shape)
         v2, w2 = np.empty((nb,) + vel.shape), np.empty((nb,) + vel.shape)
-        # a combined column's step c: the velocity moves by c f_qt (the velocity step), the
-        # coordinate by c f_q, at most the coordinate's own step
-        c_t = min(eps_velocity / abs(f_qt), eps_position / abs(f_q)) if combine else 0.0
-        c_r = min(eps_angular / abs(f_qt), eps_rotation / abs(f_q)) if combine else 0.0
+        # a combined column's step c: the velocity moves by c f_qt (its own step), the
+        # coordinate by c f_q
         turns = np.stack((turn, rotation_matrices(c_r * f_q * np.eye(3)) if combine else turn))
         eps = np.array([eps_position, eps_rotation, eps_velocity, eps_angular, c_t, c_r, f_q, f_qt])
         steps = kernels.jacobian_states(pos, np.ascontiguousarray(rot), vel, np.ascontiguousarray(wl), arrays[:4],

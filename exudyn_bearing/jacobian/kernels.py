@@ -92,7 +92,8 @@ def jacobian_assemble(out, react, steps, columns, f_q, f_qt, jac):
     each column's quotient weighted by :func:`column_weight`:
     a column of a block group (the balls, each coupled only to itself and the races/cage)
     fills each ball's own block and that ball's part of the race/cage rows; any other
-    column is the whole force change. ``columns`` = (group, coordinate k, kind) per column, (block group?, slot) per group, the balls' slots and the other slots."""
+    column is the whole force change. ``columns`` = (group, coordinate k, kind) per column,
+    (block group?, slot) per group, the balls' slots and the other slots."""
     col_group, col_k, col_kind, group_block, group_slot, balls, others = columns
     jac[:] = 0.0
     n = out.shape[1]
