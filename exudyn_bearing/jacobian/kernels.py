@@ -191,10 +191,10 @@ def race_translation_columns(react, steps, tcol, kinds, chain, chain_rows, balls
     for m in range(chain.shape[0]):
         s = chain[m]
         A = rot[s]
-        for twice in range(2):
+        for row in range(2):  # tcol's rows: the position columns, the velocity columns
             for k in range(3):
-                i = tcol[twice, k]
-                if twice == 1 and i == tcol[0, k]:  # a combined column: taken once
+                i = tcol[row, k]
+                if row == 1 and i == tcol[0, k]:  # a combined column: taken once
                     continue
                 kind = kinds[i]
                 fac = column_weight(kind, f_q, f_qt) / steps[i]

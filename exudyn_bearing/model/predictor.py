@@ -250,12 +250,11 @@ class NewtonPredictor:
             # vectors are set as they are, no other item's Newton iterate to keep
             everything = np.array_equal(np.sort(rows), np.arange(ref.size))
             own = [node_rows(mbs, nodes) for _, nodes in self.start_residuals]
-            orbits = (np.concatenate([node_rows(mbs, balls)[::6] for balls, _, _ in self.orbits]).astype(np.int64)
-                      if self.orbits else np.zeros(0, dtype=np.int64),
-                      np.concatenate([np.tile(o, (len(b), 1)) for b, o, _ in self.orbits]) if self.orbits
-                      else np.zeros((0, 3)),
-                      np.concatenate([np.tile(k, (len(b), 1)) for b, _, k in self.orbits]) if self.orbits
-                      else np.zeros((0, 3)), ref)
+            # per ball: its first coordinate's row, its bearing's origin and axis
+            balls = [(row, origin, axis) for nodes, origin, axis in self.orbits for row in node_rows(mbs, nodes)[::6]]
+            orbits = (np.array([b[0] for b in balls], dtype=np.int64),
+                      np.array([b[1] for b in balls], dtype=float).reshape(-1, 3),
+                      np.array([b[2] for b in balls], dtype=float).reshape(-1, 3), ref)
             self._indices = (starts, rows, np.ascontiguousarray(ref[rot].reshape(-1, 3)), everything, own, orbits)
         return self._indices
 
