@@ -190,7 +190,10 @@ def terms_from_plain(plain):
     return TermRecord(SurfaceRecord(*plain[0]), *plain[1:])
 
 
-@njit(cache=True, error_model="numpy")
+# The stages below allocate (or call registered terms that may): ``_nrt=True`` keeps numba's
+# reference counting on for them and their callees, which would otherwise inherit the
+# ``_nrt=False`` of their caller contact.kernels.race._race_contact.
+@njit(cache=True, error_model="numpy", _nrt=True)
 def surface_height(terms, race, theta, contact_angle, point_radius, ball, rolling_radius):
     """Stage 0: (h, dh/dθ) of the race surface at the contact of ``ball`` with ``race`` (0 inner,
     1 outer) at race-frame azimuth ``theta`` (rad), reduced radius ``rolling_radius`` R_x (m),
@@ -201,7 +204,7 @@ def surface_height(terms, race, theta, contact_angle, point_radius, ball, rollin
     return race_height(s, race, theta, contact_angle, point_radius, ball, rolling_radius)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True)
 def ball_surface_height(terms, ball, race, rotation, normal, rolling, transverse, relative_omega, ball_radius,
                         rolling_radius):
     """Stage 0, the ball's side: (h m, dh/dt m/s, G = ∂h/∂φ (3,) m/rad) of the pits and waviness
@@ -213,7 +216,7 @@ def ball_surface_height(terms, ball, race, rotation, normal, rolling, transverse
                        rolling_radius)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True)
 def film_factor(terms, cs, heating):
     """Stage 1: the factor on the isothermal film thickness of contact ``cs``; ``heating`` the
     contact's oil's c_ηT / K_c (m/W; ``terms.heating`` where one oil serves all contacts, 0: off)."""
@@ -224,7 +227,7 @@ def film_factor(terms, cs, heating):
     return _registered_film(terms.registered, cs, phi)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True)
 def contact_loads(terms, cs, phi):
     """Stage 2: (force on the ball along t1 at the contact point, N; couple on the ball about
     t2, N m) added to contact ``cs`` whose film factor is ``phi``."""
