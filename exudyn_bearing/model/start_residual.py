@@ -24,6 +24,8 @@ import math
 
 import numpy as np
 
+from ..jacobian.turn import turn_ball_blocks
+
 __all__ = ["StartResidual"]
 
 
@@ -44,6 +46,9 @@ class StartResidual:
         self._jacobian = None
         #: start residuals linearized, and evaluated exactly instead (counts)
         self.linearized = self.exact = 0
+        #: hand Exudyn the Jacobian with the balls' rotation blocks turned ahead (MODEL.md §10c)
+        self.turn_ahead = True
+        self._ball_rows = 6 * np.asarray(connector.layout["balls"], dtype=np.int64) + 3
 
     def reset(self):
         """Forget the Jacobian, the expected start and the predicted forces (a new solve)."""
@@ -71,9 +76,14 @@ class StartResidual:
 
     def jacobian(self, t, q, q_t, f_q, f_qt):
         """Exudyn's ``jacobianUserFunction`` (q without reference): the block Jacobian
-        -(f_q ∂F/∂q + f_qt ∂F/∂q̇), kept for the start residuals."""
-        jac = self.connector.jacobian(t, np.asarray(q) + self.connector.reference, np.asarray(q_t), f_q, f_qt)
+        -(f_q ∂F/∂q + f_qt ∂F/∂q̇), kept for the start residuals, and handed to Exudyn with the
+        balls' rotation blocks turned ahead by τ = f_q/f_qt (about half a step; MODEL.md §10c)."""
+        q_t = np.asarray(q_t, dtype=float)
+        jac = self.connector.jacobian(t, np.asarray(q) + self.connector.reference, q_t, f_q, f_qt)
         self._jacobian = (jac / f_q, f_qt / f_q) if f_q != 0.0 else None
+        if self.turn_ahead and f_q != 0.0 and f_qt != 0.0 and math.isfinite(f_q / f_qt):
+            jac = np.array(jac, dtype=float)
+            turn_ball_blocks(jac, q_t, self._ball_rows, f_q / f_qt)
         return jac
 
     def _linearized(self, t, expected):
