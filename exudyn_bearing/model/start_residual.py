@@ -17,6 +17,10 @@ for them: one evaluation a step fewer, the same Newton path from the predicted i
 and a convergence reference off by the linearization's error (measured in DEVELOPMENT.md,
 'The start residual from the predicted iterate'). Steps without a prediction, a Jacobian of
 another step size, or a predicted iterate the forces refuse get the exact evaluation.
+
+Its Jacobian function hands Exudyn the block Jacobian with the balls' rotation blocks turned
+ahead by about half a step (:mod:`exudyn_bearing.jacobian.turn`, MODEL.md §10c), and keeps the
+unturned one for the start residuals.
 """
 from __future__ import annotations
 
@@ -82,7 +86,7 @@ class StartResidual:
         jac = self.connector.jacobian(t, np.asarray(q) + self.connector.reference, q_t, f_q, f_qt)
         self._jacobian = (jac / f_q, f_qt / f_q) if f_q != 0.0 else None
         if self.turn_ahead and f_q != 0.0 and f_qt != 0.0 and math.isfinite(f_q / f_qt):
-            jac = np.array(jac, dtype=float)
+            jac = np.ascontiguousarray(jac, dtype=float)  # the block Jacobian's own new array
             turn_ball_blocks(jac, q_t, self._ball_rows, f_q / f_qt)
         return jac
 
