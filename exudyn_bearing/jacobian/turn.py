@@ -13,7 +13,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from contact import kernels
+from contact.kernel_cache import drop_stale
 from contact.kernels.race import rotation_matrices
+
+# turn_ball_blocks calls the contact/ kernels' rotation_matrices: recompile it when they changed
+drop_stale(__file__, [__file__, *kernels.SOURCES])
 
 __all__ = ["turn_ball_blocks"]
 
