@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from contact.kinematics import rotation_matrices
+from contact.kernels.race import rotation_matrices
 
 from . import kernels
 

@@ -133,6 +133,48 @@ def _assemble(mount, c, pos, rot, force, moment, ball_loads, out, react):
                     _add_reaction(react, ib, j, cage_slot, rot, lever, friction[ib, j], no_moment, -1.0)
 
 
+@njit(cache=True, error_model="numpy")
+def _land(pos, rot, vel, omega, frames, slots, cage_slot, guide, out):
+    """Adds the guiding land's force and friction torque on the cage (slot ``cage_slot``) and
+    their reaction at the cage centre on the guiding race's slot (if it has one) to ``out``
+    (B, n, 6), for B node states (omega GLOBAL) with race ``frames`` (origin, rotation,
+    velocity, angular velocity; B, 2, ...) and the :class:`Guide` as a plain tuple (MODEL.md
+    §1, §11d)."""
+    race, play, stiffness, damping, friction, film, max_ratio = guide
+    ro, rr, rv, rw = frames
+    bsz, n = pos.shape[0], pos.shape[1]
+    land, ecc, spin = np.empty((bsz, 3)), np.empty(bsz), np.zeros(bsz)
+    for ib in range(bsz):
+        for i in range(3):  # the film's surfaces' speeds about the race axis
+            spin[ib] += (omega[ib, cage_slot, i] + rw[ib, race, i]) * rr[ib, race, i, 2]
+    kernels.land_forces(pos[:, cage_slot].copy(), vel[:, cage_slot].copy(), ro[:, race].copy(), rv[:, race].copy(),
+                        rr[:, race, :, 2].copy(), play, stiffness, damping, film, spin, land, ecc)
+    s = slots[race]
+    torque = np.empty(3)
+    reaction = np.empty((1, 1, n, 6))
+    for ib in range(bsz):
+        for i in range(3):
+            out[ib, cage_slot, i] += land[ib, i]
+        torque[:] = 0.0
+        if friction > 0.0:  # the land's friction torque about the race axis (MODEL.md §11d)
+            ax = rr[ib, race, :, 2]
+            slip = 0.0
+            for i in range(3):
+                slip += (rw[ib, race, i] - omega[ib, cage_slot, i]) * ax[i]
+            eps = min(ecc[ib] / play, max_ratio)
+            t_land = friction * slip / math.sqrt(1.0 - eps * eps)
+            for i in range(3):
+                torque[i] = t_land * ax[i]
+            A = rot[ib, cage_slot]
+            for i in range(3):
+                out[ib, cage_slot, 3 + i] += A[0, i] * torque[0] + A[1, i] * torque[1] + A[2, i] * torque[2]
+        if s >= 0:  # the race takes the reaction at the cage centre
+            reaction[:] = 0.0
+            _add_reaction(reaction, 0, 0, s, rot[ib:ib + 1], pos[ib, cage_slot] - pos[ib, s], land[ib], torque, -1.0)
+            for i in range(6):
+                out[ib, s, i] += reaction[0, 0, s, i]
+
+
 HELD_NONE, HELD_ROTATION, HELD_ALL = 0, 1, 2
 OK, NON_FINITE, TOO_DEEP = 0, 1, 2
 
@@ -194,7 +236,6 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
     laws = (kernels.LawRecord(*laws[0]), kernels.LawRecord(*laws[1]))
     terms, cage = terms_from_plain(terms), kernels.CageRecord(*cage)
     pocket_mu, pocket_slip = pocket
-    guide_race, guide_play, guide_stiffness, guide_damping, guide_friction, guide_film, guide_max_ratio = guide
     fixed_omega, applied, driven = inputs
     n = reference.shape[0] // 6
     z = balls.shape[0]
@@ -252,49 +293,79 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
         for s in range(n):
             for i in range(6):
                 o6[s, i] += react[0, j, s, i]
-    if guide_race >= 0:
-        land, ecc, spin = np.empty((1, 3)), np.empty(1), np.zeros(1)
-        for i in range(3):  # the film's surfaces' speeds about the race axis
-            spin[0] += (omega[0, cage_slot, i] + rw[0, guide_race, i]) * rr[0, guide_race, i, 2]
-        kernels.land_forces(pos[:, cage_slot].copy(), vel[:, cage_slot].copy(), ro[:, guide_race].copy(),
-                            rv[:, guide_race].copy(), rr[:, guide_race, :, 2].copy(), guide_play, guide_stiffness,
-                            guide_damping, guide_film, spin, land, ecc)
-        for i in range(3):
-            o6[cage_slot, i] += land[0, i]
-        torque = np.zeros(3)
-        if guide_friction > 0.0:  # the land's friction torque about the race axis (MODEL.md §11d)
-            ax = rr[0, guide_race, :, 2]
-            slip = 0.0
-            for i in range(3):
-                slip += (rw[0, guide_race, i] - omega[0, cage_slot, i]) * ax[i]
-            eps = min(ecc[0] / guide_play, guide_max_ratio)
-            t_land = guide_friction * slip / math.sqrt(1.0 - eps * eps)
-            for i in range(3):
-                torque[i] = t_land * ax[i]
-            A = rot[0, cage_slot]
-            for i in range(3):
-                o6[cage_slot, 3 + i] += A[0, i] * torque[0] + A[1, i] * torque[1] + A[2, i] * torque[2]
-        s = slots[guide_race]
-        if s >= 0:  # the race takes the reaction at the cage centre
-            reaction = np.zeros((1, 1, n, 6))
-            _add_reaction(reaction, 0, 0, s, rot, pos[0, cage_slot] - pos[0, s], land[0], torque, -1.0)
-            for i in range(6):
-                o6[s, i] += reaction[0, 0, s, i]
-    if slots[0] >= 0:
-        for i in range(3):
-            o6[slots[0], i] += applied[i]
-    for s in range(n):
-        if held[s] != HELD_NONE:
-            for i in range(3 if held[s] == HELD_ROTATION else 0, 6):
-                o6[s, i] = 0.0
-    for r in range(driven.shape[0]):  # slot, I, dw_ref/dt, w_ref, 1/tau
-        s = int(driven[r, 0])
-        w_axial = rot[0, s, 0, 2] * omega[0, s, 0] + rot[0, s, 1, 2] * omega[0, s, 1] + rot[0, s, 2, 2] * omega[0, s, 2]
-        o6[s, 5] = driven[r, 1] * (driven[r, 2] + (driven[r, 3] - w_axial) * driven[r, 4])
+    if guide[0] >= 0:
+        _land(pos, rot, vel, omega, (ro, rr, rv, rw), slots, cage_slot, guide, o6.reshape(1, n, 6))
+    _applied_held_driven(rot, omega, slots, held, applied, driven, o6.reshape(1, n, 6))
     deepest = 0.0
     for k in range(penetration.shape[0]):
         deepest = max(deepest, penetration[k])
     return TOO_DEEP if deepest > max_penetration else OK
+
+
+@njit(cache=True, error_model="numpy")
+def _applied_held_driven(rot, omega, slots, held, applied, driven, out):
+    """Into ``out`` (B, n, 6) of B node states (omega GLOBAL): the ``applied`` force (N) on the
+    inner race's slot, the ``held`` components (per slot, :data:`HELD_NONE` ...) dropped, and per
+    ``driven`` row (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven
+    race's axial torque I (dw_ref/dt + (w_ref - w)/tau)."""
+    for ib in range(out.shape[0]):
+        if slots[0] >= 0:
+            for i in range(3):
+                out[ib, slots[0], i] += applied[i]
+        for s in range(out.shape[1]):
+            if held[s] != HELD_NONE:
+                for i in range(3 if held[s] == HELD_ROTATION else 0, 6):
+                    out[ib, s, i] = 0.0
+        for r in range(driven.shape[0]):
+            s = int(driven[r, 0])
+            w_axial = (rot[ib, s, 0, 2] * omega[ib, s, 0] + rot[ib, s, 1, 2] * omega[ib, s, 1]
+                       + rot[ib, s, 2, 2] * omega[ib, s, 2])
+            out[ib, s, 5] = driven[r, 1] * (driven[r, 2] + (driven[r, 3] - w_axial) * driven[r, 4])
+
+
+@njit(cache=True, error_model="numpy")
+def _batch_tail(pos, rot, vel, omega, frames, balls_now, contacts, mount, tail, inputs, work, raw_slots, out, react,
+                raw):
+    """The generalized forces of B node states (omega GLOBAL) whose ball–race ``contacts``
+    (force, moment; B, 2, Z, 3) are known, as :func:`_one_state` after its contacts but with
+    the balls' parts on the races and cage kept apart: ``out`` (B, n, 6) and ``react``
+    (B, Z, n, 6) as :func:`_assemble`'s, with the cage, drag, pocket friction, guiding land,
+    applied force, held components and driven races. ``raw`` (B, Z, len(raw_slots), 6)
+    receives ``react`` of ``raw_slots`` before the held components are dropped. ``frames``: the
+    race frames (origin, rotation, velocity, angular velocity); ``balls_now`` the balls'
+    :class:`~contact.kernels.records.BallStates`; ``tail`` = (cage, pocket, guide) of
+    :class:`Physics` as plain tuples and the ball radius (m); ``mount`` a plain tuple; ``inputs`` = (applied, driven) as in
+    :func:`_one_state`; ``work`` = (cage force, drag force, pocket friction, its point), each
+    (B, Z, 3)."""
+    mount = Mount(*mount)
+    cage, pocket, guide, ball_radius = tail
+    cage = kernels.CageRecord(*cage)
+    mu, slip_scale = pocket
+    applied, driven = inputs
+    cage_force, drag_force, friction, point = work
+    force, moment = contacts
+    c, v = balls_now.position, balls_now.velocity
+    cs = mount.cage_slot if mount.cage_slot >= 0 else 0  # (any slot when there is no cage body)
+    cage_now = kernels.BodyStates(pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy())
+    kernels.cage_and_drag(c, v, cage, cage_now, cage_force, drag_force)
+    if mu > 0.0:
+        kernels.pocket_friction(cage_force, balls_now, cage_now, ball_radius, mu, slip_scale, friction, point)
+    _assemble(mount, c, pos, rot, force, moment, (cage_force, drag_force, friction, point, mu > 0.0), out, react)
+    if guide[0] >= 0:
+        _land(pos, rot, vel, omega, frames, mount.slots, mount.cage_slot, guide, out)
+    for ib in range(react.shape[0]):
+        for j in range(react.shape[1]):
+            for k in range(raw_slots.shape[0]):
+                for i in range(6):
+                    raw[ib, j, k, i] = react[ib, j, raw_slots[k], i]
+    held = mount.held
+    _applied_held_driven(rot, omega, mount.slots, held, applied, driven, out)
+    for s in range(held.shape[0]):
+        if held[s] != HELD_NONE:
+            for ib in range(react.shape[0]):
+                for j in range(react.shape[1]):
+                    for i in range(3 if held[s] == HELD_ROTATION else 0, 6):
+                        react[ib, j, s, i] = 0.0
 
 
 class CompiledForces:
@@ -330,6 +401,7 @@ class CompiledForces:
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._mount_tuple = tuple(self.mount)
         self._work = {}
+        self._no_slots = np.zeros(0, dtype=np.int64)
         self._patterns = {}
         self.material = con.terms.surface.material  # a ball's own surface: the contacts read the balls' rotations
         self._no_rotations = {}
@@ -371,6 +443,9 @@ class CompiledForces:
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
                                     else x for x in self.physics._replace(laws=tuple(tuple(r) for r in records.laws)))
+        # what the batch's tail takes (_batch_tail): cage, pocket, guide and the ball radius
+        # (the pocket friction's lever, as in _one_state)
+        self._tail = (*self._physics_tuple[4:7], float(records.geometry.ball_radius))
 
     def fixed_omega(self, t):
         """Angular velocities (2, 3) of the kinematic races (zero rows for races on a node)."""
@@ -379,18 +454,25 @@ class CompiledForces:
             w[i] = race.speed(t) * self.con.axis
         return w
 
-    def single(self, t, q, q_t, reference):
-        """Status (:data:`OK`, :data:`NON_FINITE`, :data:`TOO_DEEP`) and the force vector
-        (6 n_nodes, reused between calls) of one state from Exudyn's coordinates q (without
-        ``reference``) and velocities q_t, in one compiled call (:func:`_one_state`)."""
+    def _inputs(self, t):
+        """((t, force function), angular velocities of the kinematic races (2, 3) rad/s, applied
+        force (3,) N, driven rows (slot, I_axial, dw_ref/dt, w_ref, 1/tau)) at ``t`` s, kept
+        for the next call: a step's Newton iterations and Jacobians share t."""
         con = self.con
-        if (t, con.applied_force) != self._time_inputs[0]:  # a step's Newton iterations share t: once
+        if (t, con.applied_force) != self._time_inputs[0]:
             driven = self.no_driven
             if con.driven:
                 driven = np.array([[*row, 1.0 / con.speed_tracking_time] for row in con.driven_speeds(t)])
             self._time_inputs = ((t, con.applied_force), self.fixed_omega(t),
                                  np.asarray(con.applied_force(t), dtype=float), driven)
-        _, fixed_omega, applied, driven = self._time_inputs
+        return self._time_inputs
+
+    def single(self, t, q, q_t, reference):
+        """Status (:data:`OK`, :data:`NON_FINITE`, :data:`TOO_DEEP`) and the force vector
+        (6 n_nodes, reused between calls) of one state from Exudyn's coordinates q (without
+        ``reference``) and velocities q_t, in one compiled call (:func:`_one_state`)."""
+        con = self.con
+        _, fixed_omega, applied, driven = self._inputs(t)
         q, q_t = np.asarray(q, dtype=float), np.asarray(q_t, dtype=float)
         status = _one_state(q, q_t, reference, self._mount_tuple, self._physics_tuple, (fixed_omega, applied, driven),
                             con.max_penetration * con.bearing.ball_diameter, self.out, self.penetration, self.load,
@@ -419,16 +501,27 @@ class CompiledForces:
                 drag=np.empty((bsz, z, 3)), friction=np.empty((bsz, z, 3)), point=np.empty((bsz, z, 3)))
         return self._work[bsz]
 
-    def __call__(self, t, pos, rot, vel, omega, same_contacts=None):
-        """(out (B, n, 6), react (B, Z, n, 6), penetration (B, 2, Z) m, load (B, 2, Z) N) for
-        B node states (omega GLOBAL); the race/cage parts caused by ball j are react[:, j].
-        ``same_contacts`` (bool, (B,) or (B, 2)) marks states whose balls and races (per
-        race: whose balls and race k) equal those of state 0 (e.g. only the cage, or only
-        the inner race, perturbed): those ball–race contacts are copied from state 0
-        instead of recomputed."""
+    def __call__(self, t, pos, rot, vel, omega, same_contacts=None, raw_slots=None):
+        """(out (B, n, 6), react (B, Z, n, 6), penetration (B, 2, Z) m, load (B, 2, Z) N, raw)
+        for B node states (omega GLOBAL): as :meth:`BearingConnector._batch_forces`, with the
+        guiding land, applied force, held components and driven races; the race/cage parts
+        caused by ball j are react[:, j]. ``same_contacts`` (bool, (B,) or (B, 2)) marks states
+        whose balls and races (per race: whose balls and race k) equal those of state 0 (e.g.
+        only the cage, or only the inner race, perturbed): those ball–race contacts are copied
+        from state 0 instead of recomputed. ``raw``: react of the slots ``raw_slots`` before
+        the held components are dropped (B, Z, len(raw_slots), 6), or None."""
+        pos, rot = np.ascontiguousarray(pos), np.ascontiguousarray(rot)
+        vel, omega = np.ascontiguousarray(vel), np.ascontiguousarray(omega)
         w = self._contacts(t, pos, rot, vel, omega, same_contacts)
-        return self._finish(np.ascontiguousarray(pos), np.ascontiguousarray(rot), np.ascontiguousarray(vel),
-                            np.ascontiguousarray(omega), w)
+        _, _, applied, driven = self._inputs(t)
+        bsz, n, z = pos.shape[0], self.con.n_nodes, self.balls.shape[0]
+        out, react = np.empty((bsz, n, 6)), np.empty((bsz, z, n, 6))
+        slots = self._no_slots if raw_slots is None else np.asarray(raw_slots, dtype=np.int64)
+        raw = np.empty((bsz, z, slots.shape[0], 6))
+        _batch_tail(pos, rot, vel, omega, (w["ro"], w["rr"], w["rv"], w["rw"]), w["balls"], (w["force"], w["moment"]),
+                    self._mount_tuple, self._tail, (applied, driven), (w["cage"], w["drag"], w["friction"], w["point"]),
+                    slots, out, react, raw)
+        return out, react, w["penetration"], w["load"], None if raw_slots is None else raw
 
     def normal_loads(self, t, pos, rot, vel, omega):
         """Normal loads (B, 2, Z) N (inner race first) of B node states (omega GLOBAL) at time ``t`` s."""
@@ -438,7 +531,7 @@ class CompiledForces:
         """Ball–race contacts of B states into (and returns) the work arrays of size B."""
         bsz = pos.shape[0]
         w = self._arrays(bsz)
-        fixed_omega = self.fixed_omega(t)
+        fixed_omega = self._inputs(t)[1]
         pos, rot = np.ascontiguousarray(pos), np.ascontiguousarray(rot)
         vel, omega = np.ascontiguousarray(vel), np.ascontiguousarray(omega)
         frames = kernels.RaceFrames(w["ro"], w["rr"], w["rv"], w["rw"])
@@ -446,6 +539,7 @@ class CompiledForces:
         # C-ordered copies: numba compiles one machine code per memory layout
         balls = kernels.BallStates(*(np.take(x, self.balls, axis=1) for x in (pos, vel, omega)),
                                    np.take(rot, self.balls, axis=1) if self.material else self._no_rotation(bsz))
+        w["balls"] = balls
         ph = self.physics
         args = (balls, frames, ph.geometry, ph.laws, ph.tables, ph.terms,
                 kernels.ContactOutputs(w["force"], w["moment"], w["penetration"], w["load"], w["traction"]))
@@ -473,24 +567,3 @@ class CompiledForces:
             same[0] = False
             self._patterns[key] = (np.flatnonzero(np.repeat(~same, z, axis=1).ravel()), *np.nonzero(same))
         return self._patterns[key]
-
-    def _finish(self, pos, rot, vel, omega, w):
-        """Cage, drag and the generalized-force assembly of B states whose ball–race
-        contacts are in ``w``."""
-        con = self.con
-        bsz = pos.shape[0]
-        c, v = (np.take(x, self.balls, axis=1) for x in (pos, vel))
-        s = con.layout["cage"] if self.cage_kind == 1 else 0  # (any slot when there is no cage body)
-        cage = kernels.BodyStates(*(np.ascontiguousarray(x[:, s]) for x in (pos, rot, vel, omega)))
-        kernels.cage_and_drag(c, v, self.physics.cage, cage, w["cage"], w["drag"])
-        mu, slip_scale = self.physics.pocket
-        if mu > 0.0:
-            balls = kernels.BallStates(c, v, np.take(omega, self.balls, axis=1), self._no_rotation(bsz))
-            kernels.pocket_friction(w["cage"], balls, cage, con.bearing.ball_radius, mu, slip_scale, w["friction"],
-                                    w["point"])
-        n = con.n_nodes
-        out = np.empty((bsz, n, 6))
-        react = np.empty((bsz, self.balls.shape[0], n, 6))
-        _assemble(self.mount, c, pos, rot, w["force"], w["moment"],
-                  (w["cage"], w["drag"], w["friction"], w["point"], mu > 0.0), out, react)
-        return out, react, w["penetration"], w["load"]

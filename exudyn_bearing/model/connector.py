@@ -348,13 +348,15 @@ class BearingConnector(GuidingLand, ConnectorDiagnostics):
         (B, Z, len(slots), 6) before the held components are zeroed (the block Jacobian's
         race columns need the contact moments a held race does not take). ``surface=False``
         leaves the surfaces out (numpy path)."""
-        if self._compiled is not None and not details and surface:
-            out, react, pen, load = self._compiled(t, pos, rot, vel, omega, same_contacts)
-            parts = None
-        else:
-            out, react, parts = self._numpy_forces(t, pos, rot, vel, omega, surface)
-            pen = parts[0].penetration.reshape(pos.shape[0], 2, self.z)
-            load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
+        if self._compiled is not None and not details and surface:  # all of it in compiled loops
+            out, react, pen, load, raw = self._compiled(t, pos, rot, vel, omega, same_contacts,
+                                                        None if raw_reactions is None else raw_reactions["slots"])
+            if raw_reactions is not None:
+                raw_reactions["react"] = raw
+            return out, react, pen, load, None
+        out, react, parts = self._numpy_forces(t, pos, rot, vel, omega, surface)
+        pen = parts[0].penetration.reshape(pos.shape[0], 2, self.z)
+        load = parts[1].normal_load.reshape(pos.shape[0], 2, self.z)
         if self.guide is not None:
             self._add_land_force(t, pos, rot, vel, omega, out)
         if self.layout["inner"] is not None:
