@@ -18,6 +18,7 @@ from ..solvers.quasidynamic import AzimuthStates
 from ..solvers.quasistatic import solve_load_distribution
 from ..solvers.raceway import choose_inner_control, jones_axis_start, raceway_control
 from ..solvers.start import steady_start
+from .start_memo import remembered
 
 __all__ = ["StartState", "race_pose", "start_state"]
 
@@ -133,14 +134,25 @@ def start_state(setup, inner, relative, speeds_rad, *, axial, radial, loaded, st
     where = relative.copy()  # where the races are: a start load moves the user's body from there
     if start_load is not None:
         axial, radial = start_load
-    loads, c_loc, p_out, w_c, omega_loc = _pure_rolling(setup, loaded, axial, radial, relative, speeds, w_i, w_o,
-                                                        initial_control, start_load)
+
+    def rolling():  # (its results, relative after it: _pure_rolling updates it in place)
+        moved = relative.copy()
+        return _pure_rolling(setup, loaded, axial, radial, moved, speeds, w_i, w_o, initial_control,
+                             start_load), moved
+
+    # within one call (an error estimate's rerun, a longer run of a map's point) solved once
+    # (exudyn_bearing.model.start_memo): every value the solvers read is in the key
+    (loads, c_loc, p_out, w_c, omega_loc), relative[:] = remembered(
+        ("pure rolling", setup, loaded, axial, radial, relative.copy(), speeds, w_i, w_o, initial_control,
+         start_load), rolling)
     on_body = inner.kind == "body"
     if steady is None:
-        steady = steady_start(bearing, setup.lubricant, initial_state, axial_force=axial, radial_force=radial,
-                              rpm_i=rpm_i, rpm_o=rpm_o, sense=sense, inner=inner, displaced=displaced,
-                              contact_law=law, ball_drag=setup.drag, cage=cage,
-                              pose=where if on_body and start_load is None else None)
+        pose = where if on_body and start_load is None else None
+        steady = remembered(
+            ("steady start", setup, initial_state, axial, radial, rpm_i, rpm_o, sense, inner.kind, displaced, pose),
+            lambda: steady_start(bearing, setup.lubricant, initial_state, axial_force=axial, radial_force=radial,
+                                 rpm_i=rpm_i, rpm_o=rpm_o, sense=sense, inner=inner, displaced=displaced,
+                                 contact_law=law, ball_drag=setup.drag, cage=cage, pose=pose))
     psi = loads.azimuth
     e_r = np.stack([np.cos(psi), np.sin(psi), np.zeros(z)], axis=1)
     e_psi = np.stack([-np.sin(psi), np.cos(psi), np.zeros(z)], axis=1)

@@ -16,6 +16,7 @@ from ..bearingfile import as_setup
 from ..cage import CageModel
 from ..errors import BearingSimulationError
 from ..model.predictor import VARIABLE as PREDICTOR_VARIABLE
+from ..model.start_memo import keeping_starts
 from ..model.thermal_nodes import UPDATE_PERIOD
 from ..presets import REFERENCE_BEARING
 from ..races import node_rows
@@ -335,6 +336,7 @@ def with_surface_step(settings: SolverSettings, handle, rpm: float) -> SolverSet
 
 
 @accepts_old_names
+@keeping_starts  # the error estimate's rerun starts from the same start (model.start_memo)
 def simulate(bearing: Bearing | BearingSetup | str = REFERENCE_BEARING, lubricant=FROM_SETUP, *,
              axial_force: float = 1300.0, radial_force: float = 0.0, rpm: float = 1800.0, time: float = 0.05,
              settings: SolverSettings = SolverSettings(), ball_drag: BallDrag | None = FROM_SETUP,

@@ -141,6 +141,7 @@ def _run_point(args) -> dict:
     point, setup, registered = args
     start = _time.perf_counter()
     try:
+        from ..model.start_memo import kept_starts
         from ..simulation.runner import SolverSettings, simulate
 
         for name, term in registered:  # (a worker process: the terms its parent registered)
@@ -150,12 +151,13 @@ def _run_point(args) -> dict:
         # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
         # (each run from scratch: at most twice the cost of the final one)
         length = point.time if point.time is not None else FIRST_TIME
-        while True:
-            s = simulate(setup, axial_force=point.axial, radial_force=point.radial, rpm=point.rpm, time=length,
-                         settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
-            if point.time is not None or s.settled or length >= MAX_TIME:
-                break
-            length = min(2.0 * length, MAX_TIME)
+        with kept_starts():  # a longer run starts from the same start (model.start_memo)
+            while True:
+                s = simulate(setup, axial_force=point.axial, radial_force=point.radial, rpm=point.rpm, time=length,
+                             settings=SolverSettings(progress=False))  # workers in parallel: no progress lines
+                if point.time is not None or s.settled or length >= MAX_TIME:
+                    break
+                length = min(2.0 * length, MAX_TIME)
         res = s.results
         last = res.last(1 / 3)
         peak = float(max(res.inner["slip"][last].max(), res.outer["slip"][last].max()))

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..bearing import Bearing
+from ..model.start_memo import keeping_starts
 from ..results.records import units_of
 from ..setup import FROM_SETUP
 from .passages import ball_defect_events, defect_events, defect_reaches, impact_summary, passages_cut, read_impacts
@@ -158,6 +159,7 @@ class VibrationResult:
                 "inputs": self.inputs}
 
 
+@keeping_starts  # the error estimate's rerun starts from the same start (model.start_memo)
 def vibration(bearing, *, rpm: float, axial_force: float = 0.0, radial_force: float = 0.0, time: float = 0.5,
               sample_rate: float = 20000.0, housing=FROM_SETUP, band: tuple | str | None = "auto", settle: float = 0.02,
               surface=FROM_SETUP, settings=None, error_estimate: bool = False, lubricant=FROM_SETUP,
