@@ -333,11 +333,11 @@ def _batch_tail(pos, rot, vel, omega, frames, balls_now, contacts, mount, tail, 
     applied force, held components and driven races. ``raw`` (B, Z, len(raw_slots), 6)
     receives ``react`` of ``raw_slots`` before the held components are dropped. ``frames``: the
     race frames (origin, rotation, velocity, angular velocity); ``balls_now`` the balls'
-    :class:`~contact.kernels.records.BallStates`; ``tail`` = (cage, pocket, guide) of
+    :class:`~contact.kernels.records.BallStates` as a plain tuple; ``tail`` = (cage, pocket, guide) of
     :class:`Physics` as plain tuples and the ball radius (m); ``mount`` a plain tuple; ``inputs`` = (applied, driven) as in
     :func:`_one_state`; ``work`` = (cage force, drag force, pocket friction, its point), each
     (B, Z, 3)."""
-    mount = Mount(*mount)
+    mount, balls_now = Mount(*mount), kernels.BallStates(*balls_now)
     cage, pocket, guide, ball_radius = tail
     cage = kernels.CageRecord(*cage)
     mu, slip_scale = pocket
@@ -518,7 +518,8 @@ class CompiledForces:
         out, react = np.empty((bsz, n, 6)), np.empty((bsz, z, n, 6))
         slots = self._no_slots if raw_slots is None else np.asarray(raw_slots, dtype=np.int64)
         raw = np.empty((bsz, z, slots.shape[0], 6))
-        _batch_tail(pos, rot, vel, omega, (w["ro"], w["rr"], w["rv"], w["rw"]), w["balls"], (w["force"], w["moment"]),
+        _batch_tail(pos, rot, vel, omega, (w["ro"], w["rr"], w["rv"], w["rw"]), tuple(w["balls"]),
+                    (w["force"], w["moment"]),
                     self._mount_tuple, self._tail, (applied, driven), (w["cage"], w["drag"], w["friction"], w["point"]),
                     slots, out, react, raw)
         return out, react, w["penetration"], w["load"], None if raw_slots is None else raw

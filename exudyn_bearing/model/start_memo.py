@@ -21,7 +21,16 @@ from contextlib import contextmanager
 
 __all__ = ["keeping_starts", "kept_starts", "remembered"]
 
-_LOCAL = threading.local()  # .kept: {digest: result} of the innermost scope of this thread, or None
+_LOCAL = threading.local()  # .kept: the open :class:`_Scope` of this thread, or None
+
+
+class _Scope:
+    """What one :func:`kept_starts` scope keeps: results by digest, and the registered terms
+    seen (held, so that no new term can take a seen one's id while the scope lasts)."""
+
+    def __init__(self):
+        self.results: dict = {}
+        self.terms: list = []
 
 
 @contextmanager
@@ -30,7 +39,7 @@ def kept_starts():
     (:func:`remembered`); nested scopes share the outermost one's."""
     outer = getattr(_LOCAL, "kept", None)
     if outer is None:
-        _LOCAL.kept = {}
+        _LOCAL.kept = _Scope()
     try:
         yield
     finally:
@@ -49,15 +58,17 @@ def keeping_starts(function):
     return run
 
 
-def _digest(inputs) -> bytes | None:
+def _digest(inputs, scope) -> bytes | None:
     """The digest of ``inputs`` and of the registered contact terms (they act on every contact),
     None where something cannot be pickled."""
     from contact.terms import TERMS
 
-    try:  # the terms by identity: within one scope the same objects
-        data = pickle.dumps((inputs, tuple((name, id(entry)) for name, entry in TERMS.items())),
+    try:  # the terms by identity, held by the scope (an id is unique among live objects)
+        terms = tuple(TERMS.items())
+        scope.terms.extend(entry for _, entry in terms)
+        data = pickle.dumps((inputs, tuple((name, id(entry)) for name, entry in terms)),
                             protocol=pickle.HIGHEST_PROTOCOL)
-    except (pickle.PicklingError, TypeError, AttributeError):
+    except Exception:  # noqa: BLE001 - whatever cannot be pickled keeps nothing; the call goes on
         return None
     return hashlib.blake2b(data, digest_size=32).digest()
 
@@ -66,11 +77,11 @@ def remembered(inputs: tuple, compute):
     """``compute()``, a start solver's result for ``inputs`` (a name and every value it reads),
     or, inside :func:`kept_starts`, a copy of the result kept for equal inputs. The result
     is kept as a copy too: what the caller does with its own cannot change a later one."""
-    kept = getattr(_LOCAL, "kept", None)
-    key = None if kept is None else _digest(inputs)
-    if key is not None and key in kept:
-        return copy.deepcopy(kept[key])
+    scope = getattr(_LOCAL, "kept", None)
+    key = None if scope is None else _digest(inputs, scope)
+    if key is not None and key in scope.results:
+        return copy.deepcopy(scope.results[key])
     result = compute()
     if key is not None:
-        kept[key] = copy.deepcopy(result)
+        scope.results[key] = copy.deepcopy(result)
     return result
