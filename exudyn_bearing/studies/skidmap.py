@@ -149,7 +149,8 @@ def _run_point(args) -> dict:
                 register_term(name, term)
 
         # fixed length, or until settled: 0.1, 0.2, 0.4, ... s from the start, capped at 2 s
-        # (each run from scratch: at most twice the cost of the final one)
+        # (each run from the start state, solved once for all of them: at most twice the cost of
+        # the final run)
         length = point.time if point.time is not None else FIRST_TIME
         with kept_starts():  # a longer run starts from the same start (model.start_memo)
             while True:
