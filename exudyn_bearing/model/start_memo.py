@@ -76,7 +76,8 @@ def _digest(inputs, scope) -> bytes | None:
 def remembered(inputs: tuple, compute):
     """``compute()``, a start solver's result for ``inputs`` (a name and every value it reads),
     or, inside :func:`kept_starts`, a copy of the result kept for equal inputs. The result
-    is kept as a copy too: what the caller does with its own cannot change a later one."""
+    is kept as a copy too: what the caller does with its own cannot change a later one. A
+    result served again is the first solve's, its solver timings included."""
     scope = getattr(_LOCAL, "kept", None)
     key = None if scope is None else _digest(inputs, scope)
     if key is not None and key in scope.results:
