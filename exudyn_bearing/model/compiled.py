@@ -170,8 +170,8 @@ def _one_state(q, q_t, reference, mount, physics, inputs, max_penetration, out, 
             for i in range(6):
                 o6[s, i] += react[0, j, s, i]
     if guide[0] >= 0:
-        land(pos, rot, vel, omega, (ro, rr, rv, rw), slots, cage_slot, guide, o6.reshape(1, n, 6))
-    applied_held_driven(rot, omega, slots, held, applied, driven, o6.reshape(1, n, 6))
+        land((pos, rot, vel, omega), (ro, rr, rv, rw), slots, cage_slot, guide, o6.reshape(1, n, 6))
+    applied_held_driven(rot, omega, slots, held, (applied, driven), o6.reshape(1, n, 6))
     deepest = 0.0
     for k in range(penetration.shape[0]):
         deepest = max(deepest, penetration[k])
@@ -253,7 +253,7 @@ class CompiledForces:
         # plain tuples for the one-state kernel: numba types them in its C fast path
         self._physics_tuple = tuple(plain_terms(x) if isinstance(x, TermRecord) else tuple(x) if isinstance(x, tuple)
                                     else x for x in self.physics._replace(laws=tuple(tuple(r) for r in records.laws)))
-        # what the batch's tail takes (_batch_tail): cage, pocket, guide and the ball radius
+        # what the batch's tail takes (slot_forces.batch_tail): cage, pocket, guide and the ball radius
         # (the pocket friction's lever, as in _one_state)
         self._tail = (*self._physics_tuple[4:7], float(records.geometry.ball_radius))
 
@@ -328,10 +328,9 @@ class CompiledForces:
         out, react = np.empty((bsz, n, 6)), np.empty((bsz, z, n, 6))
         slots = self._no_slots if raw_slots is None else np.asarray(raw_slots, dtype=np.int64)
         raw = np.empty((bsz, z, slots.shape[0], 6))
-        batch_tail(pos, rot, vel, omega, (w["ro"], w["rr"], w["rv"], w["rw"]), tuple(w["balls"]),
-                    (w["force"], w["moment"]),
-                    self._mount_tuple, self._tail, (applied, driven), (w["cage"], w["drag"], w["friction"], w["point"]),
-                    slots, out, react, raw)
+        batch_tail((pos, rot, vel, omega), (w["ro"], w["rr"], w["rv"], w["rw"]), tuple(w["balls"]),
+                   (w["force"], w["moment"]), (self._mount_tuple, self._tail), (applied, driven),
+                   (w["cage"], w["drag"], w["friction"], w["point"]), (slots, raw), out, react)
         return out, react, w["penetration"], w["load"], None if raw_slots is None else raw
 
     def normal_loads(self, t, pos, rot, vel, omega):

@@ -112,27 +112,28 @@ def assemble(mount, c, pos, rot, force, moment, ball_loads, out, react):
 
 
 @njit(cache=True, error_model="numpy")
-def land(pos, rot, vel, omega, frames, slots, cage_slot, guide, out):
+def land(nodes, frames, slots, cage_slot, guide, out):
     """Adds the guiding land's force and friction torque on the cage (slot ``cage_slot``) and
     their reaction at the cage centre on the guiding race's slot (if it has one) to ``out``
-    (B, n, 6), for B node states (omega GLOBAL) with race ``frames`` (origin, rotation,
-    velocity, angular velocity; B, 2, ...) and the :class:`Guide` as a plain tuple (MODEL.md
-    §1, §11d)."""
+    (B, n, 6), for B node states ``nodes`` (position, rotation, velocity, GLOBAL angular velocity)
+    with race ``frames`` (origin, rotation, velocity, angular velocity; B, 2, ...) and the
+    :class:`Guide` as a plain tuple (MODEL.md §1, §11d)."""
+    pos, rot, vel, omega = nodes
     race, play, stiffness, damping, friction, film, max_ratio = guide
     ro, rr, rv, rw = frames
     bsz, n = pos.shape[0], pos.shape[1]
-    land, ecc, spin = np.empty((bsz, 3)), np.empty(bsz), np.zeros(bsz)
+    force, ecc, spin = np.empty((bsz, 3)), np.empty(bsz), np.zeros(bsz)
     for ib in range(bsz):
         for i in range(3):  # the film's surfaces' speeds about the race axis
             spin[ib] += (omega[ib, cage_slot, i] + rw[ib, race, i]) * rr[ib, race, i, 2]
     kernels.land_forces(pos[:, cage_slot].copy(), vel[:, cage_slot].copy(), ro[:, race].copy(), rv[:, race].copy(),
-                        rr[:, race, :, 2].copy(), play, stiffness, damping, film, spin, land, ecc)
+                        rr[:, race, :, 2].copy(), play, stiffness, damping, film, spin, force, ecc)
     s = slots[race]
     torque = np.empty(3)
-    reaction = np.empty((1, 1, n, 6))
+    per_state = out.reshape(bsz, 1, n, 6)  # add_reaction's (B, 1 ball, n, 6) view of out
     for ib in range(bsz):
         for i in range(3):
-            out[ib, cage_slot, i] += land[ib, i]
+            out[ib, cage_slot, i] += force[ib, i]
         torque[:] = 0.0
         if friction > 0.0:  # the land's friction torque about the race axis (MODEL.md §11d)
             ax = rr[ib, race, :, 2]
@@ -147,18 +148,16 @@ def land(pos, rot, vel, omega, frames, slots, cage_slot, guide, out):
             for i in range(3):
                 out[ib, cage_slot, 3 + i] += A[0, i] * torque[0] + A[1, i] * torque[1] + A[2, i] * torque[2]
         if s >= 0:  # the race takes the reaction at the cage centre
-            reaction[:] = 0.0
-            add_reaction(reaction, 0, 0, s, rot[ib:ib + 1], pos[ib, cage_slot] - pos[ib, s], land[ib], torque, -1.0)
-            for i in range(6):
-                out[ib, s, i] += reaction[0, 0, s, i]
+            add_reaction(per_state, ib, 0, s, rot, pos[ib, cage_slot] - pos[ib, s], force[ib], torque, -1.0)
 
 
 @njit(cache=True, error_model="numpy")
-def applied_held_driven(rot, omega, slots, held, applied, driven, out):
-    """Into ``out`` (B, n, 6) of B node states (omega GLOBAL): the ``applied`` force (N) on the
-    inner race's slot, the ``held`` components (per slot, :data:`HELD_NONE` ...) dropped, and per
-    ``driven`` row (slot, I_axial kg m², dw_ref/dt rad/s², w_ref rad/s, 1/tau 1/s) the driven
-    race's axial torque I (dw_ref/dt + (w_ref - w)/tau)."""
+def applied_held_driven(rot, omega, slots, held, loads, out):
+    """Into ``out`` (B, n, 6) of B node states (omega GLOBAL): ``loads`` = (the applied force
+    (3,) N on the inner race's slot, the driven rows), the ``held`` components (per slot,
+    :data:`HELD_NONE` ...) dropped, and per driven row (slot, I_axial kg m², dw_ref/dt rad/s²,
+    w_ref rad/s, 1/tau 1/s) the driven race's axial torque I (dw_ref/dt + (w_ref - w)/tau)."""
+    applied, driven = loads
     for ib in range(out.shape[0]):
         if slots[0] >= 0:
             for i in range(3):
@@ -175,26 +174,28 @@ def applied_held_driven(rot, omega, slots, held, applied, driven, out):
 
 
 @njit(cache=True, error_model="numpy")
-def batch_tail(pos, rot, vel, omega, frames, balls_now, contacts, mount, tail, inputs, work, raw_slots, out, react,
-                raw):
-    """The generalized forces of B node states (omega GLOBAL) whose ball–race ``contacts``
-    (force, moment; B, 2, Z, 3) are known, as :func:`~exudyn_bearing.model.compiled._one_state` after its contacts but with
-    the balls' parts on the races and cage kept apart: ``out`` (B, n, 6) and ``react``
-    (B, Z, n, 6) as :func:`assemble`'s, with the cage, drag, pocket friction, guiding land,
-    applied force, held components and driven races. ``raw`` (B, Z, len(raw_slots), 6)
-    receives ``react`` of ``raw_slots`` before the held components are dropped. ``frames``: the
-    race frames (origin, rotation, velocity, angular velocity); ``balls_now`` the balls'
-    :class:`~contact.kernels.records.BallStates` as a plain tuple; ``tail`` = (cage, pocket,
-    guide) of :class:`~exudyn_bearing.model.compiled.Physics` as plain tuples and the ball radius (m); ``mount`` a plain
-    tuple; ``inputs`` = (applied, driven) as in :func:`~exudyn_bearing.model.compiled._one_state`; ``work`` = (cage force,
-    drag force, pocket friction, its point), each (B, Z, 3)."""
-    mount, balls_now = Mount(*mount), kernels.BallStates(*balls_now)
-    cage, pocket, guide, ball_radius = tail
-    cage = kernels.CageRecord(*cage)
+def batch_tail(nodes, frames, balls_now, contacts, connector, loads, work, raw, out, react):
+    """The generalized forces of B node states ``nodes`` (position, rotation, velocity, GLOBAL angular
+    velocity) whose ball–race ``contacts`` (force, moment; B, 2, Z, 3) are known, as the
+    one-state residual (:mod:`exudyn_bearing.model.compiled`) after its contacts but with the
+    balls' parts on the races and cage kept apart: ``out`` (B, n, 6) and ``react`` (B, Z, n, 6)
+    as :func:`assemble`'s, with the cage, drag, pocket friction, guiding land, applied force,
+    held components and driven races.
+
+    ``frames``: the race frames (origin, rotation, velocity, angular velocity);
+    ``balls_now``: the balls' :class:`~contact.kernels.records.BallStates` as a plain tuple;
+    ``connector``: (:class:`Mount`, (cage, pocket, guide, ball radius m)) as plain tuples;
+    ``loads``: (applied force, driven rows) as :func:`applied_held_driven` takes them;
+    ``work``: (cage force, drag force, pocket friction, its point), each (B, Z, 3);
+    ``raw``: (slots, (B, Z, len(slots), 6)), the second receiving ``react`` of those slots
+    before the held components are dropped."""
+    pos, rot, vel, omega = nodes
+    mount, (cage, pocket, guide, ball_radius) = connector
+    mount, balls_now, cage = Mount(*mount), kernels.BallStates(*balls_now), kernels.CageRecord(*cage)
     mu, slip_scale = pocket
-    applied, driven = inputs
     cage_force, drag_force, friction, point = work
     force, moment = contacts
+    raw_slots, raw_react = raw
     c, v = balls_now.position, balls_now.velocity
     cs = mount.cage_slot if mount.cage_slot >= 0 else 0  # (any slot when there is no cage body)
     cage_now = kernels.BodyStates(pos[:, cs].copy(), rot[:, cs].copy(), vel[:, cs].copy(), omega[:, cs].copy())
@@ -203,14 +204,14 @@ def batch_tail(pos, rot, vel, omega, frames, balls_now, contacts, mount, tail, i
         kernels.pocket_friction(cage_force, balls_now, cage_now, ball_radius, mu, slip_scale, friction, point)
     assemble(mount, c, pos, rot, force, moment, (cage_force, drag_force, friction, point, mu > 0.0), out, react)
     if guide[0] >= 0:
-        land(pos, rot, vel, omega, frames, mount.slots, mount.cage_slot, guide, out)
+        land(nodes, frames, mount.slots, mount.cage_slot, guide, out)
     for ib in range(react.shape[0]):
         for j in range(react.shape[1]):
             for k in range(raw_slots.shape[0]):
                 for i in range(6):
-                    raw[ib, j, k, i] = react[ib, j, raw_slots[k], i]
+                    raw_react[ib, j, k, i] = react[ib, j, raw_slots[k], i]
     held = mount.held
-    applied_held_driven(rot, omega, mount.slots, held, applied, driven, out)
+    applied_held_driven(rot, omega, mount.slots, held, loads, out)
     for s in range(held.shape[0]):
         if held[s] != HELD_NONE:
             for ib in range(react.shape[0]):
