@@ -21,6 +21,21 @@ from exudyn_bearing.cage import CageModel
 from exudyn_bearing.model.builder import CreateAngularContactBearing
 
 
+
+def record_keyword(monkeypatch, owner, name: str, keyword: str) -> list:
+    """Replaces ``owner.name`` (a function of a module or class) for the test by one that
+    calls it unchanged and first appends each call's ``keyword`` argument to the list
+    returned (how often, and with what, a solver was called)."""
+    calls, original = [], getattr(owner, name)
+
+    def recording(*args, **kwargs):
+        calls.append(kwargs[keyword])
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(owner, name, recording)
+    return calls
+
+
 # (from tests/test_compiled.py)
 def _contacts(n, seed=0):
     """Contact states of the reference bearing's range (MODEL.md §9): semi-axes 0.8–1.8 mm

@@ -9,6 +9,7 @@ from exudyn_bearing import REFERENCE_BEARING as B
 from exudyn_bearing.studies import skidmap
 from exudyn_bearing.criteria import hirano_minimum_axial
 from exudyn_bearing.studies.skidmap import SkidMap, SkidPoint, parse_range, skid_map
+from tests.helpers import record_keyword
 
 SHORT = 0.003  # s simulated per point: these tests check the engine, not the physics
 
@@ -158,16 +159,9 @@ def test_until_settled_doubles_the_run_up_to_the_cap(monkeypatch, tmp_path):
     at 2, 4 and 8 ms and reported too short to judge at the cap; the markdown says so."""
     monkeypatch.setattr(skidmap, "FIRST_TIME", 0.002)
     monkeypatch.setattr(skidmap, "MAX_TIME", 0.008)
-    lengths = []
     from exudyn_bearing.simulation import runner
 
-    original = runner.simulate
-
-    def counting(*args, **kw):
-        lengths.append(kw["time"])
-        return original(*args, **kw)
-
-    monkeypatch.setattr(runner, "simulate", counting)
+    lengths = record_keyword(monkeypatch, runner, "simulate", "time")
     table = skid_map(axial_force=[1300.0], rpm=[1800.0], time=None, out=tmp_path, workers=1, progress=None,
                      refine=False)
     assert lengths == [0.002, 0.004, 0.008]
@@ -204,13 +198,7 @@ def test_refinement_takes_the_grid_points_steady_states_and_finds_the_same_thres
     from exudyn_bearing.solvers.steady import steady_state
 
     setup = BearingSetup(B)
-    calls = []
-
-    def counted(*args, **kw):
-        calls.append(kw["axial_force"])
-        return steady_state(*args, **kw)
-
-    monkeypatch.setattr(skidmap, "steady_state", counted)
+    calls = record_keyword(monkeypatch, skidmap, "steady_state", "axial_force")
 
     def refined(steady, **kw):
         pts = [SkidPoint(a, 0.0, 900.0, 0.1, kinematic_cage_slip_percent=s, cage_slip_percent=s, peak_ball_slip=0.1,

@@ -8,19 +8,12 @@ import exudyn as exu
 from exudyn_bearing import BearingSetup, CreateAngularContactBearing, REFERENCE_BEARING, races
 from exudyn_bearing.model import start_memo, start_state
 from exudyn_bearing.model.start_memo import kept_starts, remembered
+from tests.helpers import record_keyword
 
 
 def _counted(monkeypatch):
     """The builder's calls of the steady start solver, counted."""
-    calls = []
-    solve = start_state.steady_start
-
-    def counted(*args, **kwargs):
-        calls.append(kwargs["axial_force"])
-        return solve(*args, **kwargs)
-
-    monkeypatch.setattr(start_state, "steady_start", counted)
-    return calls
+    return record_keyword(monkeypatch, start_state, "steady_start", "axial_force")
 
 
 def _start(rpm=1800.0, axial=1300.0, setup=None):
